@@ -1,0 +1,38 @@
+#pragma once
+// Path files: JSON "coverkit.path/1", CSV (robot,seq,x,y) and GeoJSON LineStrings. Spec: docs/formats.md.
+// Writers never leave a partial file: they write to a temporary file and rename it on success.
+#include <coverkit/geometry/metrics.h>
+#include <coverkit/geometry/path.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace coverkit::datasets {
+
+struct PathDocument {
+  std::string planner;
+  std::string status;
+  Rational robotRadius;
+  Rational cellSize;
+  std::vector<Path> paths;                            ///< one per robot
+  std::vector<std::pair<std::string, double>> metrics;   ///< name → value, written in order
+  std::vector<std::pair<std::string, double>> statistics;
+};
+
+/// Arc sampling tolerance used for CSV and GeoJSON output (map units).
+constexpr double kArcSampleTolerance = 1e-3;
+
+/// Metric name → value, in a fixed order (the keys of the JSON "metrics" object).
+std::vector<std::pair<std::string, double>> metricFields(const Metrics& m);
+
+/// Writes by extension (.json, .csv, .geojson); InputError for an unknown extension or unwritable path.
+void writePathFile(const std::string& file, const PathDocument& doc);
+std::string pathJson(const PathDocument& doc);
+/// Reads a JSON path file (or a CSV one: consecutive rows of a robot become line segments).
+PathDocument readPathFile(const std::string& file);
+
+/// Writes `content` to `file` atomically (temporary file + rename).
+void writeFileAtomically(const std::string& file, const std::string& content);
+
+}  // namespace coverkit::datasets

@@ -1,0 +1,340 @@
+// The coverkit command line: plan, evaluate, render, list, demo. Bad input: a message naming the
+// file, the place and the problem on stderr, exit code 2, no output file.
+#include "render.h"
+#include "runner.h"
+
+#include <coverkit/datasets/path_io.h>
+#include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/registry.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+#ifndef COVERKIT_GIT_REVISION
+#define COVERKIT_GIT_REVISION "unknown"
+#endif
+#ifndef COVERKIT_VERSION
+#define COVERKIT_VERSION "0.0.0"
+#endif
+
+namespace fs = std::filesystem;
+using namespace coverkit;
+
+namespace {
+
+/// A progress bar on stderr, shown only on a terminal and only once a run has taken a second.
+class Progress {
+public:
+  explicit Progress(std::size_t total) : total_(total), t0_(std::chrono::steady_clock::now()), tty_(isatty(2) != 0) {}
+  void step(const std::string& what) {
+    ++done_;
+    if (!tty_ || std::chrono::steady_clock::now() - t0_ < std::chrono::seconds(1)) return;
+    const int width = 30, filled = static_cast<int>(width * done_ / std::max<std::size_t>(total_, 1));
+    std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(width - filled), ' ') << "] "
+              << done_ << "/" << total_ << " " << what.substr(0, 40) << "\033[K" << std::flush;
+    shown_ = true;
+  }
+  ~Progress() {
+    if (shown_) std::cerr << "\n";
+  }
+
+private:
+  std::size_t total_, done_ = 0;
+  std::chrono::steady_clock::time_point t0_;
+  bool tty_, shown_ = false;
+};
+
+std::map<std::string, std::string> parseParams(const std::vector<std::string>& kv) {
+  std::map<std::string, std::string> out;
+  for (const std::string& s : kv) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--param", s, "expected KEY=VALUE");
+    out[s.substr(0, eq)] = s.substr(eq + 1);
+  }
+  return out;
+}
+
+Problem makeProblem(const std::string& map, const std::string& radius, const std::string& start, bool unknownFree,
+                    const std::string& cellSize) {
+  Problem p;
+  const Rational r = parseRational(radius, "--radius", radius);
+  if (r <= 0) throw InputError("--radius", radius, "robot radius must be > 0");
+  Robot robot{r, std::nullopt};
+  if (!start.empty()) robot.start = experiments::parsePoint(start, "--start");
+  if (!cellSize.empty()) p.cellSize = parseRational(cellSize, "--cell-size", cellSize);
+  datasets::MapOptions mo;
+  mo.unknownIsFree = unknownFree;
+  p.workspace = datasets::loadMap(map, mo);
+  p.robots.push_back(robot);
+  return p;
+}
+
+
+datasets::PathDocument makeDocument(const planners::PlanningContext& ctx, const experiments::RunResult& r) {
+  datasets::PathDocument d;
+  d.planner = r.plan.planner;
+  d.status = toString(r.plan.status);
+  d.robotRadius = ctx.problem.robots.at(0).radius;
+  d.cellSize = ctx.cells.subSize();
+  d.paths = r.plan.paths;
+  if (succeeded(r.plan.status)) d.metrics = datasets::metricFields(r.metrics);
+  for (auto& [k, v] : r.plan.statistics) d.statistics.emplace_back(k, v);
+  return d;
+}
+
+nlohmann::json evaluationJson(const ValidationReport& v, const Metrics& m) {
+  nlohmann::json j;
+  j["valid"] = v.valid;
+  j["violations"] = nlohmann::json::array();
+  for (const auto& x : v.violations)
+    j["violations"].push_back({{"kind", x.kind}, {"robot", x.robot}, {"segment", x.segment}, {"detail", x.detail}});
+  for (auto& [k, val] : datasets::metricFields(m)) j[k] = val;
+  j["area_method"] = m.areaMethod;
+  return j;
+}
+
+void printEvaluation(const ValidationReport& v, const Metrics& m) {
+  std::cout << "valid: " << (v.valid ? "yes" : "no") << "\n";
+  for (const auto& x : v.violations)
+    std::cout << "  violation [" << x.kind << "] robot " << x.robot << " segment " << x.segment << ": " << x.detail << "\n";
+  for (auto& [k, val] : datasets::metricFields(m)) std::cout << "  " << std::left << std::setw(22) << k << formatDouble(val) << "\n";
+  std::cout << "  area_method           " << m.areaMethod << "\n";
+}
+
+std::string today() {
+  std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+std::string hostName() {
+  char buf[256] = {0};
+  gethostname(buf, sizeof buf - 1);
+  return buf;
+}
+
+int cmdDemo(const std::string& outDir, bool quiet) {
+  const fs::path data = COVERKIT_DATA_DIR;
+  std::ifstream list(data / "scenarios.txt");
+  if (!list) throw InputError((data / "scenarios.txt").string(), "", "built-in scenario list not found");
+  struct Scenario {
+    std::string name, file, radius;
+  };
+  std::vector<Scenario> scenarios;
+  std::string line;
+  while (std::getline(list, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    Scenario s;
+    ls >> s.name >> s.file >> s.radius;
+    scenarios.push_back(s);
+  }
+  fs::create_directories(outDir);
+  const auto names = planners::Registry::instance().names();
+  Progress progress(scenarios.size() * names.size());
+  std::ostringstream csv, md;
+  csv << "planner,map,seed,params,status,valid,violations";
+  const Metrics none;
+  for (auto& [k, v] : datasets::metricFields(none)) csv << "," << k;
+  csv << ",t_cells,t_graph,t_tree,t_path,t_total\n";
+  md << "# coverkit demo\n\ncoverkit " << COVERKIT_VERSION << " (" << COVERKIT_GIT_REVISION << "), " << today() << ", host " << hostName()
+     << ".\nEvery plan was checked by the independent validator (continuity, exact clearance, start).\n\n"
+     << "| map | planner | status | valid | sub-cell coverage | area coverage | length | turns | time (s) |\n|---|---|---|---|---|---|---|---|---|\n";
+  int invalid = 0;
+  for (const Scenario& s : scenarios) {
+    const Problem problem = makeProblem((data / s.file).string(), s.radius, "", false, "");
+    const planners::PlanningContext ctx = planners::makeContext(problem);
+    for (const std::string& planner : names) {
+      experiments::RunResult r = experiments::runOnce(ctx, planner, {});
+      progress.step(s.name + " " + planner);
+      if (!r.validation.valid) ++invalid;
+      std::map<std::string, double> t;
+      for (auto& [k, v] : r.plan.timings) t[k] = v;
+      csv << planner << "," << s.name << ",0,," << toString(r.plan.status) << "," << (r.validation.valid ? "true" : "false") << ","
+          << r.validation.violations.size();
+      for (auto& [k, v] : datasets::metricFields(r.metrics)) csv << "," << formatDouble(v);
+      csv << "," << formatDouble(t["cells"]) << "," << formatDouble(t["graph"]) << "," << formatDouble(t["tree"]) << ","
+          << formatDouble(t["path"]) << "," << formatDouble(r.totalSeconds) << "\n";
+      const std::string pic = s.name + "_" + planner + ".png";
+      experiments::PictureContent pc;
+      pc.workspace = &ctx.problem.workspace;
+      pc.cells = &ctx.cells;
+      pc.tree = &r.plan.treeEdges;
+      pc.paths = &r.plan.paths;
+      pc.radius = ctx.problem.robots[0].radius.get_d();
+      pc.title = s.name + " / " + planner + " / r=" + s.radius + " / " + toString(r.plan.status);
+      experiments::renderPicture((fs::path(outDir) / pic).string(), pc);
+      std::ostringstream cov;
+      cov << std::fixed << std::setprecision(4) << r.metrics.subcellCoverage << " | " << r.metrics.areaCoverage;
+      md << "| " << s.name << " | " << planner << " | " << toString(r.plan.status) << " | " << (r.validation.valid ? "yes" : "**no**") << " | "
+         << cov.str() << " (" << r.metrics.areaMethod << ") | " << formatDouble(std::round(r.metrics.length * 1000) / 1000) << " | "
+         << r.metrics.turns << " | " << formatDouble(std::round(r.totalSeconds * 10000) / 10000) << " |\n";
+    }
+  }
+  md << "\n## Pictures\n\nGreen: free sub-cells; orange: partial; dark: obstacles; blue: spanning tree; red: path (faint band: the swept disc).\n\n";
+  for (const Scenario& s : scenarios)
+    for (const std::string& planner : names) md << "### " << s.name << " — " << planner << "\n\n![" << s.name << "](" << s.name << "_" << planner << ".png)\n\n";
+  md << "Columns are defined in docs/metrics.md; results.csv holds every metric and per-phase time.\n";
+  datasets::writeFileAtomically((fs::path(outDir) / "results.csv").string(), csv.str());
+  datasets::writeFileAtomically((fs::path(outDir) / "report.md").string(), md.str());
+  nlohmann::json meta{{"version", COVERKIT_VERSION}, {"git_revision", COVERKIT_GIT_REVISION}, {"host", hostName()}, {"date", today()},
+                      {"scenarios", scenarios.size()}, {"planners", names}};
+  datasets::writeFileAtomically((fs::path(outDir) / "run.json").string(), meta.dump(1) + "\n");
+  if (!quiet)
+    std::cout << "coverkit demo: " << scenarios.size() * names.size() << " plans, " << invalid << " invalid; report: "
+              << (fs::path(outDir) / "report.md").string() << "\n";
+  return invalid == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"coverkit: coverage path planning for disc robots on exact geometry"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string(COVERKIT_VERSION) + " (" + COVERKIT_GIT_REVISION + ")");
+
+  std::string map, radius, start, out, picture, planner = "stc", pathFile, cellSize;
+  std::vector<std::string> params;
+  bool unknownFree = false, json = false, showCells = false, showTree = false, quiet = false;
+  double timeLimit = 0;
+
+  auto addMapOptions = [&](CLI::App* c, bool needRadius) {
+    c->add_option("--map", map, "map file (.yaml ROS map, .map Moving AI, .wkt, .geojson, .grid)")->required();
+    auto* r = c->add_option("--radius", radius, "robot disc radius r (map units); sub-cells are 2r unless --cell-size");
+    if (needRadius) r->required();
+    c->add_option("--cell-size", cellSize, "sub-cell size D (default 2r)");
+    c->add_flag("--unknown-free", unknownFree, "ROS maps: treat unknown pixels as free (default: obstacle)");
+  };
+  auto* plan = app.add_subcommand("plan", "plan a coverage path");
+  addMapOptions(plan, true);
+  plan->add_option("--planner", planner, "planner name (see 'coverkit list')")->required();
+  plan->add_option("--start", start, "start X,Y (default: centre of the first free sub-cell of the largest free component)");
+  plan->add_option("--param", params, "planner parameter KEY=VALUE (repeatable)");
+  plan->add_option("--time-limit", timeLimit, "seconds (0: none)");
+  plan->add_option("--out", out, "output path file (.json, .csv, .geojson)")->required();
+  plan->add_option("--picture", picture, "picture (.png, .svg)");
+
+  auto* eval = app.add_subcommand("evaluate", "validate a path file and compute its metrics");
+  addMapOptions(eval, false);
+  eval->add_option("--path", pathFile, "path file (.json or .csv)")->required();
+  eval->add_flag("--json", json, "print one JSON object");
+
+  auto* render = app.add_subcommand("render", "draw a map with its cells, a planner's tree and a path");
+  addMapOptions(render, true);
+  render->add_option("--path", pathFile, "path file to draw");
+  render->add_option("--planner", planner, "plan with this planner and draw its tree and path");
+  render->add_option("--param", params, "planner parameter KEY=VALUE");
+  render->add_option("--start", start, "start X,Y");
+  render->add_flag("--cells", showCells, "draw the cell classification");
+  render->add_flag("--tree", showTree, "draw the planner's spanning tree");
+  render->add_option("--out", out, "picture (.png, .svg)")->required();
+
+  auto* list = app.add_subcommand("list", "list planners and their parameters");
+  std::string demoOut = "coverkit-demo";
+  auto* demo = app.add_subcommand("demo", "plan every built-in scenario with every planner, validate, write a report");
+  demo->add_option("--out", demoOut, "output folder (default: coverkit-demo)");
+  demo->add_flag("--quiet", quiet, "no summary line");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  try {
+    if (*list) {
+      for (const std::string& n : planners::Registry::instance().names()) {
+        auto p = planners::Registry::instance().create(n);
+        const auto caps = p->capabilities();
+        std::cout << n << ": " << p->description() << "\n  capabilities: " << (caps.online ? "online" : "offline")
+                  << (caps.multiRobot ? ", multi-robot" : ", single robot") << ", output " << caps.output << "\n";
+        for (const auto& s : p->params())
+          std::cout << "  --param " << s.name << "=<" << planners::toString(s.type) << "> default " << s.defaultValue << ", range " << s.range
+                    << "\n      " << s.help << "\n";
+      }
+      return 0;
+    }
+    if (*demo) return cmdDemo(demoOut, quiet);
+    if (*plan) {
+      const auto kv = parseParams(params);
+      if (!picture.empty()) experiments::checkPictureName(picture);
+      { const std::string e = fs::path(out).extension().string();
+        if (e != ".json" && e != ".csv" && e != ".geojson") throw InputError(out, "--out", "unknown output format '" + e + "' (expected .json, .csv or .geojson)"); }
+      planners::Registry::instance().create(planner);  // unknown planner: before any work
+      const planners::PlanningContext ctx = planners::makeContext(makeProblem(map, radius, start, unknownFree, cellSize));
+      Progress progress(1);
+      const experiments::RunResult r = experiments::runOnce(ctx, planner, kv, timeLimit);
+      progress.step(planner);
+      datasets::writePathFile(out, makeDocument(ctx, r));
+      if (!picture.empty()) {
+        experiments::PictureContent pc{&ctx.problem.workspace, &ctx.cells, &r.plan.treeEdges, &r.plan.paths, ctx.problem.robots[0].radius.get_d(),
+                                       planner + " on " + fs::path(map).filename().string()};
+        experiments::renderPicture(picture, pc);
+      }
+      std::cout << planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "
+                << (r.validation.valid ? "yes" : "no") << "; sub-cell coverage " << formatDouble(r.metrics.subcellCoverage) << "; length "
+                << formatDouble(r.metrics.length) << "; wrote " << out << "\n";
+      return succeeded(r.plan.status) ? 0 : 1;
+    }
+    if (*eval) {
+      const datasets::PathDocument doc = datasets::readPathFile(pathFile);
+      std::string rad = radius;
+      if (rad.empty()) {
+        if (doc.robotRadius <= 0) throw InputError(pathFile, "robot_radius", "missing: give --radius");
+        rad = doc.robotRadius.get_str();
+      }
+      std::string cs = cellSize;
+      if (cs.empty() && doc.cellSize > 0) cs = doc.cellSize.get_str();
+      Problem problem = makeProblem(map, rad, "", unknownFree, cs);
+      problem.robots.assign(std::max<std::size_t>(doc.paths.size(), 1), problem.robots[0]);
+      for (std::size_t i = 0; i < doc.paths.size(); ++i) problem.robots[i].start = Point{exactFromDouble(doc.paths[i].start.x), exactFromDouble(doc.paths[i].start.y)};
+      const planners::PlanningContext ctx = planners::makeContext(problem);
+      const ValidationReport v = validatePaths(ctx.problem, doc.paths);
+      const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths);
+      if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
+      else printEvaluation(v, m);
+      return v.valid ? 0 : 1;
+    }
+    if (*render) {
+      experiments::checkPictureName(out);
+      const auto kv = parseParams(params);
+      const planners::PlanningContext ctx = planners::makeContext(makeProblem(map, radius, start, unknownFree, cellSize));
+      std::vector<Path> paths;
+      std::vector<std::pair<PointD, PointD>> tree;
+      if (!pathFile.empty()) paths = datasets::readPathFile(pathFile).paths;
+      else if (render->count("--planner")) {
+        experiments::RunResult r = experiments::runOnce(ctx, planner, kv);
+        paths = r.plan.paths;
+        tree = r.plan.treeEdges;
+      }
+      experiments::PictureContent pc{&ctx.problem.workspace, showCells ? &ctx.cells : nullptr, showTree ? &tree : nullptr, &paths,
+                                     ctx.problem.robots[0].radius.get_d(), fs::path(map).filename().string()};
+      experiments::renderPicture(out, pc);
+      return 0;
+    }
+  } catch (const InputError& e) {
+    std::cerr << "coverkit: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "coverkit: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

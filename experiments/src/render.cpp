@@ -1,0 +1,140 @@
+#include "render.h"
+
+#include <coverkit/datasets/path_io.h>
+#include <coverkit/geometry/error.h>
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace coverkit::experiments {
+
+namespace {
+std::string extOf(const std::string& f) {
+  std::string e = std::filesystem::path(f).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+}  // namespace
+
+void checkPictureName(const std::string& file) {
+  const std::string e = extOf(file);
+  if (e != ".png" && e != ".svg") throw InputError(file, "--picture", "unknown picture format '" + e + "' (expected .png or .svg)");
+}
+
+void renderPicture(const std::string& file, const PictureContent& c) {
+  checkPictureName(file);
+  const Box b = c.workspace->bbox();
+  const double x0 = b.xmin.get_d(), y0 = b.ymin.get_d(), w = b.xmax.get_d() - x0, h = b.ymax.get_d() - y0;
+  const double scale = 1000.0 / std::max(w, h);
+  const int margin = 10, titleH = c.title.empty() ? 0 : 22;
+  const int W = static_cast<int>(std::ceil(w * scale)) + 2 * margin, H = static_cast<int>(std::ceil(h * scale)) + 2 * margin + titleH;
+  const std::string tmp = file + ".tmp-coverkit";
+  const bool svg = extOf(file) == ".svg";
+  cairo_surface_t* surface = svg ? cairo_svg_surface_create(tmp.c_str(), W, H) : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  auto X = [&](double x) { return margin + (x - x0) * scale; };
+  auto Y = [&](double y) { return titleH + margin + (h - (y - y0)) * scale; };
+  // obstacles: bounding box grey, free regions white (even-odd fill of all rings)
+  cairo_set_source_rgb(cr, 0.25, 0.25, 0.28);
+  cairo_rectangle(cr, X(x0), Y(y0 + h), w * scale, h * scale);
+  cairo_fill(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  for (const Ring* ring : c.workspace->rings()) {
+    for (std::size_t i = 0; i < ring->size(); ++i) {
+      const Point& p = (*ring)[i];
+      if (i == 0) cairo_move_to(cr, X(p.x.get_d()), Y(p.y.get_d()));
+      else cairo_line_to(cr, X(p.x.get_d()), Y(p.y.get_d()));
+    }
+    cairo_close_path(cr);
+  }
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_fill(cr);
+  if (c.cells) {
+    const double D = c.cells->subSizeD();
+    const double ox = c.cells->originX().get_d(), oy = c.cells->originY().get_d();
+    for (int r = 0; r < c.cells->subRows(); ++r)
+      for (int col = 0; col < c.cells->subCols(); ++col) {
+        const CellState s = c.cells->sub(col, r);
+        if (s == CellState::kFree) cairo_set_source_rgba(cr, 0.55, 0.85, 0.55, 0.35);
+        else if (s == CellState::kPartial) cairo_set_source_rgba(cr, 0.95, 0.75, 0.3, 0.45);
+        else continue;
+        cairo_rectangle(cr, X(ox + col * D), Y(oy + (r + 1) * D), D * scale, D * scale);
+        cairo_fill(cr);
+      }
+    cairo_set_line_width(cr, 0.6);
+    cairo_set_source_rgba(cr, 0.3, 0.3, 0.3, 0.35);
+    for (int col = 0; col <= c.cells->megaCols(); ++col) {
+      cairo_move_to(cr, X(ox + 2 * col * D), Y(oy));
+      cairo_line_to(cr, X(ox + 2 * col * D), Y(oy + c.cells->subRows() * D));
+    }
+    for (int r = 0; r <= c.cells->megaRows(); ++r) {
+      cairo_move_to(cr, X(ox), Y(oy + 2 * r * D));
+      cairo_line_to(cr, X(ox + c.cells->subCols() * D), Y(oy + 2 * r * D));
+    }
+    cairo_stroke(cr);
+  }
+  if (c.tree) {
+    cairo_set_source_rgba(cr, 0.1, 0.3, 0.9, 0.6);
+    cairo_set_line_width(cr, 1.5);
+    for (const auto& [a, bb] : *c.tree) {
+      cairo_move_to(cr, X(a.x), Y(a.y));
+      cairo_line_to(cr, X(bb.x), Y(bb.y));
+    }
+    cairo_stroke(cr);
+  }
+  if (c.paths) {
+    const double colors[4][3] = {{0.85, 0.1, 0.1}, {0.1, 0.5, 0.1}, {0.5, 0.1, 0.6}, {0.9, 0.5, 0.0}};
+    for (std::size_t i = 0; i < c.paths->size(); ++i) {
+      const auto pts = (*c.paths)[i].polyline(0.5 / scale);
+      if (pts.empty()) continue;
+      const auto& col = colors[i % 4];
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+      cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+      if (c.radius > 0) {  // swept area, faint
+        cairo_set_source_rgba(cr, col[0], col[1], col[2], 0.12);
+        cairo_set_line_width(cr, 2 * c.radius * scale);
+        cairo_move_to(cr, X(pts[0].x), Y(pts[0].y));
+        for (const PointD& p : pts) cairo_line_to(cr, X(p.x), Y(p.y));
+        cairo_stroke(cr);
+      }
+      cairo_set_source_rgb(cr, col[0], col[1], col[2]);
+      cairo_set_line_width(cr, 1.6);
+      cairo_move_to(cr, X(pts[0].x), Y(pts[0].y));
+      for (const PointD& p : pts) cairo_line_to(cr, X(p.x), Y(p.y));
+      cairo_stroke(cr);
+      cairo_arc(cr, X(pts[0].x), Y(pts[0].y), 5, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+  }
+  if (!c.title.empty()) {
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 14);
+    cairo_move_to(cr, margin, 16);
+    cairo_show_text(cr, c.title.c_str());
+  }
+  cairo_destroy(cr);
+  cairo_status_t st = CAIRO_STATUS_SUCCESS;
+  if (!svg) st = cairo_surface_write_to_png(surface, tmp.c_str());
+  cairo_surface_finish(surface);
+  if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  std::error_code ec;
+  if (st != CAIRO_STATUS_SUCCESS) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(file, "", std::string("cannot write picture: ") + cairo_status_to_string(st));
+  }
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(file, "", "cannot write picture: " + ec.message());
+  }
+}
+
+}  // namespace coverkit::experiments

@@ -1,0 +1,49 @@
+#pragma once
+// Coverage metrics, independent of any planner. Formulas in docs/metrics.md.
+#include <coverkit/geometry/cell_grid.h>
+#include <coverkit/geometry/path.h>
+
+#include <string>
+#include <vector>
+
+namespace coverkit {
+
+struct MetricOptions {
+  double speed = 0.2;                  ///< m/s, for time_s
+  double turnToleranceDeg = 1.0;       ///< heading changes above this count as turns
+  std::size_t exactAreaMaxSegments = 3000;   ///< above this, area coverage is rasterised
+  std::size_t rasterMaxPixels = 4'000'000;
+};
+
+struct Metrics {
+  std::size_t freeSubcells = 0;        ///< sub-cells classified free
+  std::size_t coveredSubcells = 0;     ///< free sub-cells the robot centre entered
+  double subcellCoverage = 0;          ///< covered / free
+  std::size_t enteredSubcells = 0;     ///< distinct sub-cells entered (any state)
+  std::size_t revisitedSubcells = 0;   ///< sub-cells entered more than once
+  double overlapRatio = 0;             ///< revisited / entered
+  double freeArea = 0;                 ///< area(F)
+  double coveredArea = 0;              ///< area(F ∩ swept)
+  double areaCoverage = 0;             ///< coveredArea / freeArea
+  double areaCoverageError = 0;        ///< bound on |areaCoverage − true value| (0 when exact)
+  std::string areaMethod;              ///< "exact" or "raster"
+  double sweptAreaOverlap = 0;         ///< (Σ 2r·len + πr²) / coveredArea − 1
+  double length = 0;
+  std::size_t turns = 0;
+  double turningAngleDeg = 0;
+  double time = 0;                     ///< length / speed (s)
+  std::size_t segments = 0;
+};
+
+Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,
+                       const MetricOptions& options = {});
+
+/// Area of F ∩ (path ⊕ disc(r)). Exact construction with CGAL (circle-segment traits) when every
+/// line segment is axis-parallel or has a rational unit direction and there are no arcs; returns
+/// false otherwise (the caller rasterises).
+bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths, double& area);
+/// Rasterised area of F ∩ swept with a rigorous error bound (pixels whose status is uncertain).
+double rasterCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths,
+                         std::size_t maxPixels, double& errorBound);
+
+}  // namespace coverkit

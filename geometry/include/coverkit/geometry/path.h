@@ -1,0 +1,67 @@
+#pragma once
+// Paths, plans and problems: what planners produce and what the validator and metrics read.
+#include <coverkit/geometry/types.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace coverkit {
+
+/// A straight segment or a circular arc of the robot centre. Coordinates are doubles (output);
+/// the validator reads them as the exact rationals they hold.
+struct PathSegment {
+  enum class Kind { kLine, kArc };
+  Kind kind = Kind::kLine;
+  PointD from, to;
+  PointD center;      ///< arcs only
+  bool ccw = true;    ///< arcs only: counter-clockwise from `from` to `to`
+
+  static PathSegment line(PointD a, PointD b) { return {Kind::kLine, a, b, {}, true}; }
+  static PathSegment arc(PointD a, PointD b, PointD c, bool ccw) { return {Kind::kArc, a, b, c, ccw}; }
+  double length() const;
+};
+
+struct Path {
+  PointD start;
+  std::vector<PathSegment> segments;
+  double length() const;
+  /// Points along the path, arcs sampled so the chord error is at most `tolerance`.
+  std::vector<PointD> polyline(double tolerance) const;
+};
+
+struct Robot {
+  Rational radius;                 ///< disc radius r > 0
+  std::optional<Point> start;      ///< none: the documented default start is used
+};
+
+/// One planning problem. D (sub-cell size) is 2r unless set.
+struct Problem {
+  Workspace workspace;
+  std::vector<Robot> robots;
+  std::optional<Rational> cellSize;
+  Rational subCellSize() const { return cellSize ? *cellSize : Rational(2 * robots.at(0).radius); }
+};
+
+enum class PlanStatus {
+  kExactSolution,     ///< the planner's coverage goal was met
+  kPartialCoverage,   ///< planned, but some reachable cells were left (e.g. time-out)
+  kInvalidStart,      ///< the start is not usable for this planner (e.g. not in a free mega-cell)
+  kNoFreeSpace,       ///< nothing to cover
+  kTimeout,
+};
+const char* toString(PlanStatus s);
+inline bool succeeded(PlanStatus s) { return s == PlanStatus::kExactSolution || s == PlanStatus::kPartialCoverage; }
+
+struct Plan {
+  std::string planner;
+  PlanStatus status = PlanStatus::kExactSolution;
+  std::string message;                        ///< human-readable detail for the status
+  std::vector<Path> paths;                    ///< one per robot
+  std::vector<std::pair<std::string, double>> timings;   ///< phase → seconds, in order
+  std::map<std::string, double> statistics;   ///< planner-specific numbers
+  std::vector<std::pair<PointD, PointD>> treeEdges;   ///< spanning-tree edges (for pictures), if any
+};
+
+}  // namespace coverkit

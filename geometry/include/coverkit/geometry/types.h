@@ -1,0 +1,53 @@
+#pragma once
+// Core value types of coverkit. CGAL-free: geometry/src converts at the edge, once.
+#include <coverkit/geometry/rational.h>
+
+#include <string>
+#include <vector>
+
+namespace coverkit {
+
+struct Point {
+  Rational x, y;
+};
+inline bool operator==(const Point& a, const Point& b) { return a.x == b.x && a.y == b.y; }
+
+struct PointD {
+  double x = 0, y = 0;
+};
+
+/// A closed ring of vertices (the last vertex is not repeated). Outer rings are counter-clockwise,
+/// holes clockwise, once a Workspace is normalised.
+using Ring = std::vector<Point>;
+
+/// One connected free region: its outer boundary and the obstacles inside it (holes).
+struct Region {
+  Ring outer;
+  std::vector<Ring> holes;
+};
+
+struct Box {
+  Rational xmin, ymin, xmax, ymax;
+};
+
+/// The workspace W: a set of interior-disjoint free regions. Everything outside them is obstacle.
+/// Grid maps become regions whose holes are merged occupied (and unknown) pixels.
+struct Workspace {
+  std::vector<Region> regions;
+  std::string name;    ///< where it came from (file name or generator spec)
+  std::string units = "m";
+
+  Box bbox() const;
+  /// Every ring (outer rings and holes) in a stable order.
+  std::vector<const Ring*> rings() const;
+  std::size_t vertexCount() const;
+};
+
+/// Exact twice-signed area of a ring (counter-clockwise positive).
+Rational signedArea2(const Ring& ring);
+/// Exact area of the free space of a workspace.
+Rational freeArea(const Workspace& w);
+/// Orients outer rings counter-clockwise and holes clockwise.
+void normalise(Workspace& w);
+
+}  // namespace coverkit

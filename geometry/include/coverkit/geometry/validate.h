@@ -1,0 +1,42 @@
+#pragma once
+// The independent validator: continuity, exact clearance, start respected.
+// It knows nothing of planners; it reads a path's doubles as the exact rationals they hold.
+#include <coverkit/geometry/path.h>
+
+#include <string>
+#include <vector>
+
+namespace coverkit {
+
+struct Violation {
+  std::string kind;      ///< "continuity", "clearance", "start", "arc", "empty"
+  int robot = 0;
+  int segment = -1;      ///< index in the robot's segments, -1 for the path as a whole
+  std::string detail;
+};
+
+struct ValidationReport {
+  bool valid = true;
+  std::vector<Violation> violations;
+  std::size_t segmentsChecked = 0;
+  std::size_t exactTests = 0;   ///< segment/edge pairs that needed exact arithmetic
+};
+
+struct ValidationOptions {
+  /// Gap between consecutive pieces accepted as continuous (the gap itself is checked for
+  /// clearance as a segment). Default 1e-9 (map units).
+  double continuityTolerance = 1e-9;
+  /// Distance within which the path must start at the robot's start.
+  double startTolerance = 1e-9;
+  std::size_t maxViolations = 50;
+};
+
+/// Validates one path per robot of `problem` (paths.size() must equal robots.size()).
+ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& paths,
+                               const ValidationOptions& options = {});
+
+/// Exact: the disc of radius r centred anywhere on the segment [a,b] lies in W and meets no obstacle
+/// interior (distance to every boundary edge ≥ r, and a inside W). Exposed for tests and planners.
+bool segmentClear(const Workspace& w, const Rational& r, const Point& a, const Point& b);
+
+}  // namespace coverkit

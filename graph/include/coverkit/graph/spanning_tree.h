@@ -1,0 +1,48 @@
+#pragma once
+// Spanning trees of the mega-cell graph (the STC family's trees).
+//
+//  - dfs_ccw: depth-first, neighbours scanned counter-clockwise starting after the parent
+//    (Gabriely & Rimon's Spiral-STC order; the root scans E, N, W, S as if its parent were south).
+//    BGL's depth_first_search visits out-edges in a fixed stored order, which cannot express a
+//    parent-relative order, so this one is plain arrays (O(V)).
+//  - bfs: breadth-first, neighbours E, N, W, S; Boost.Graph on a compressed_sparse_row_graph.
+//  - kruskal_straight: minimum spanning tree with weights that favour straight runs (horizontal
+//    edges cost 1, vertical 2, so rows become long branches and the circumnavigation turns less);
+//    ties broken by edge index so the tree is unique. Boost.Graph Kruskal on the CSR graph.
+// Plain-array versions of BFS, Kruskal and fixed-order DFS exist as baselines: the benchmark
+// (experiments/bench) compares them with Boost.Graph and the tests check they give the same tree.
+#include <coverkit/graph/grid_graph.h>
+
+#include <string>
+#include <vector>
+
+namespace coverkit::graph {
+
+struct SpanningTree {
+  int root = -1;
+  std::vector<int> parent;            ///< -1 for the root and for nodes not in the tree
+  std::vector<std::uint8_t> edges;    ///< per node: bit d set when the tree joins it to neighbour d
+  std::size_t nodes = 0;              ///< nodes in the tree (root's component)
+  bool contains(int v) const { return v == root || parent[static_cast<std::size_t>(v)] >= 0; }
+  bool operator==(const SpanningTree& o) const { return root == o.root && parent == o.parent; }
+};
+
+enum class TreeStrategy { kDfsCcw, kBfs, kKruskalStraight };
+const char* toString(TreeStrategy s);
+/// Parses "dfs_ccw", "bfs", "kruskal_straight"; false when unknown.
+bool parseTreeStrategy(const std::string& text, TreeStrategy& out);
+std::vector<std::string> treeStrategyNames();
+
+/// The tree of `root`'s component with the given strategy (the fast implementation of each).
+SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s);
+
+SpanningTree dfsCcwTree(const GridGraph& g, int root);
+SpanningTree bfsTreeBgl(const GridGraph& g, int root);
+SpanningTree bfsTreePlain(const GridGraph& g, int root);
+SpanningTree kruskalTreeBgl(const GridGraph& g, int root);
+SpanningTree kruskalTreePlain(const GridGraph& g, int root);
+/// Fixed-order DFS (E, N, W, S), Boost.Graph and plain: the like-for-like pair for the benchmark.
+SpanningTree dfsTreeBgl(const GridGraph& g, int root);
+SpanningTree dfsTreePlain(const GridGraph& g, int root);
+
+}  // namespace coverkit::graph

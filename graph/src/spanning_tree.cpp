@@ -1,0 +1,285 @@
+#include <coverkit/graph/spanning_tree.h>
+
+#include <boost/graph/breadth_first_search.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/graph/depth_first_search.hpp>
+#include <boost/graph/kruskal_min_spanning_tree.hpp>
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <numeric>
+#include <queue>
+
+namespace coverkit::graph {
+
+namespace {
+
+struct EdgeWeight {
+  long w = 0;
+};
+using Csr = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, EdgeWeight>;
+
+SpanningTree emptyTree(const GridGraph& g, int root) {
+  SpanningTree t;
+  t.root = root;
+  t.parent.assign(g.size(), -1);
+  t.edges.assign(g.size(), 0);
+  return t;
+}
+
+int dirBetween(const GridGraph& g, int from, int to) {
+  const int dc = g.col(to) - g.col(from), dr = g.row(to) - g.row(from);
+  for (int d = 0; d < 4; ++d)
+    if (kDx[d] == dc && kDy[d] == dr) return d;
+  return -1;
+}
+
+void link(const GridGraph& g, SpanningTree& t, int parent, int child) {
+  t.parent[static_cast<std::size_t>(child)] = parent;
+  const int d = dirBetween(g, parent, child);
+  t.edges[static_cast<std::size_t>(parent)] |= static_cast<std::uint8_t>(1u << d);
+  t.edges[static_cast<std::size_t>(child)] |= static_cast<std::uint8_t>(1u << opposite(d));
+  ++t.nodes;
+}
+
+bool validRoot(const GridGraph& g, int root) {
+  return root >= 0 && static_cast<std::size_t>(root) < g.size() && g.active[static_cast<std::size_t>(root)];
+}
+
+/// Both directions of every edge, sorted by source, targets in E, N, W, S order.
+Csr makeCsr(const GridGraph& g, bool weighted) {
+  std::vector<std::pair<int, int>> el;
+  std::vector<EdgeWeight> w;
+  el.reserve(g.size() * 4);
+  for (int v = 0; v < static_cast<int>(g.size()); ++v)
+    for (int d = 0; d < 4; ++d) {
+      const int u = g.neighbour(v, d);
+      if (u < 0) continue;
+      el.emplace_back(v, u);
+      if (weighted) {
+        // unique weight per undirected edge: straightness class first, then the edge's index
+        const long lo = std::min(u, v), horizontal = (d == kEast || d == kWest);
+        w.push_back({(horizontal ? 1L : 2L) * 4L * static_cast<long>(g.size()) + 2L * lo + (horizontal ? 0 : 1)});
+      } else {
+        w.push_back({});
+      }
+    }
+  return Csr(boost::edges_are_sorted, el.begin(), el.end(), w.begin(), g.size());
+}
+
+struct TreeRecorder : boost::default_dfs_visitor {
+  std::vector<int>* pred;
+  template <class E, class G>
+  void tree_edge(E e, const G& gr) const {
+    (*pred)[static_cast<std::size_t>(boost::target(e, gr))] = static_cast<int>(boost::source(e, gr));
+  }
+};
+
+SpanningTree fromParents(const GridGraph& g, int root, const std::vector<int>& pred) {
+  SpanningTree t = emptyTree(g, root);
+  t.nodes = 1;
+  for (int v = 0; v < static_cast<int>(g.size()); ++v)
+    if (pred[static_cast<std::size_t>(v)] >= 0 && v != root) link(g, t, pred[static_cast<std::size_t>(v)], v);
+  return t;
+}
+
+/// Orients an undirected edge set (per-node masks) away from the root.
+SpanningTree orient(const GridGraph& g, int root, const std::vector<std::uint8_t>& mask) {
+  SpanningTree t = emptyTree(g, root);
+  t.nodes = 1;
+  std::vector<int> stack{root};
+  std::vector<std::uint8_t> seen(g.size(), 0);
+  seen[static_cast<std::size_t>(root)] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (int d = 0; d < 4; ++d) {
+      if (!(mask[static_cast<std::size_t>(v)] >> d & 1)) continue;
+      const int u = g.id(g.col(v) + kDx[d], g.row(v) + kDy[d]);
+      if (seen[static_cast<std::size_t>(u)]) continue;
+      seen[static_cast<std::size_t>(u)] = 1;
+      link(g, t, v, u);
+      stack.push_back(u);
+    }
+  }
+  return t;
+}
+
+void addMask(const GridGraph& g, std::vector<std::uint8_t>& mask, int a, int b) {
+  const int d = dirBetween(g, a, b);
+  mask[static_cast<std::size_t>(a)] |= static_cast<std::uint8_t>(1u << d);
+  mask[static_cast<std::size_t>(b)] |= static_cast<std::uint8_t>(1u << opposite(d));
+}
+
+}  // namespace
+
+const char* toString(TreeStrategy s) {
+  switch (s) {
+    case TreeStrategy::kDfsCcw: return "dfs_ccw";
+    case TreeStrategy::kBfs: return "bfs";
+    case TreeStrategy::kKruskalStraight: return "kruskal_straight";
+  }
+  return "?";
+}
+
+bool parseTreeStrategy(const std::string& text, TreeStrategy& out) {
+  for (TreeStrategy s : {TreeStrategy::kDfsCcw, TreeStrategy::kBfs, TreeStrategy::kKruskalStraight})
+    if (text == toString(s)) {
+      out = s;
+      return true;
+    }
+  return false;
+}
+
+std::vector<std::string> treeStrategyNames() { return {"dfs_ccw", "bfs", "kruskal_straight"}; }
+
+SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s) {
+  switch (s) {
+    case TreeStrategy::kDfsCcw: return dfsCcwTree(g, root);
+    case TreeStrategy::kBfs: return bfsTreeBgl(g, root);
+    case TreeStrategy::kKruskalStraight: return kruskalTreeBgl(g, root);
+  }
+  return dfsCcwTree(g, root);
+}
+
+SpanningTree dfsCcwTree(const GridGraph& g, int root) {
+  SpanningTree t = emptyTree(g, root);
+  if (!validRoot(g, root)) return t;
+  t.nodes = 1;
+  struct Frame {
+    int v, start, k;
+  };
+  std::vector<std::uint8_t> seen(g.size(), 0);
+  seen[static_cast<std::size_t>(root)] = 1;
+  std::vector<Frame> stack{{root, kEast, 0}};
+  while (!stack.empty()) {
+    Frame& f = stack.back();
+    if (f.k == 4) {
+      stack.pop_back();
+      continue;
+    }
+    const int d = (f.start + f.k++) & 3;
+    const int u = g.neighbour(f.v, d);
+    if (u < 0 || seen[static_cast<std::size_t>(u)]) continue;
+    seen[static_cast<std::size_t>(u)] = 1;
+    link(g, t, f.v, u);
+    // at u the parent lies in direction opposite(d): scan from the next direction counter-clockwise
+    stack.push_back({u, (opposite(d) + 1) & 3, 0});
+  }
+  return t;
+}
+
+SpanningTree dfsTreePlain(const GridGraph& g, int root) {
+  SpanningTree t = emptyTree(g, root);
+  if (!validRoot(g, root)) return t;
+  t.nodes = 1;
+  std::vector<std::uint8_t> seen(g.size(), 0);
+  seen[static_cast<std::size_t>(root)] = 1;
+  std::vector<std::pair<int, int>> stack{{root, 0}};
+  while (!stack.empty()) {
+    auto& [v, k] = stack.back();
+    if (k == 4) {
+      stack.pop_back();
+      continue;
+    }
+    const int u = g.neighbour(v, k++);
+    if (u < 0 || seen[static_cast<std::size_t>(u)]) continue;
+    seen[static_cast<std::size_t>(u)] = 1;
+    link(g, t, v, u);
+    stack.emplace_back(u, 0);
+  }
+  return t;
+}
+
+SpanningTree dfsTreeBgl(const GridGraph& g, int root) {
+  if (!validRoot(g, root)) return emptyTree(g, root);
+  const Csr csr = makeCsr(g, false);
+  std::vector<int> pred(g.size(), -1);
+  TreeRecorder vis;
+  vis.pred = &pred;
+  std::vector<boost::default_color_type> color(g.size(), boost::white_color);
+  boost::depth_first_visit(csr, static_cast<Csr::vertex_descriptor>(root), vis,
+                           boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, csr)));
+  return fromParents(g, root, pred);
+}
+
+SpanningTree bfsTreePlain(const GridGraph& g, int root) {
+  SpanningTree t = emptyTree(g, root);
+  if (!validRoot(g, root)) return t;
+  t.nodes = 1;
+  std::vector<std::uint8_t> seen(g.size(), 0);
+  std::vector<int> queue{root};
+  seen[static_cast<std::size_t>(root)] = 1;
+  for (std::size_t h = 0; h < queue.size(); ++h) {
+    const int v = queue[h];
+    for (int d = 0; d < 4; ++d) {
+      const int u = g.neighbour(v, d);
+      if (u < 0 || seen[static_cast<std::size_t>(u)]) continue;
+      seen[static_cast<std::size_t>(u)] = 1;
+      link(g, t, v, u);
+      queue.push_back(u);
+    }
+  }
+  return t;
+}
+
+SpanningTree bfsTreeBgl(const GridGraph& g, int root) {
+  if (!validRoot(g, root)) return emptyTree(g, root);
+  const Csr csr = makeCsr(g, false);
+  std::vector<int> pred(g.size(), -1);
+  std::vector<boost::default_color_type> color(g.size(), boost::white_color);
+  auto cmap = boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, csr));
+  boost::queue<Csr::vertex_descriptor> q;
+  boost::breadth_first_visit(
+      csr, static_cast<Csr::vertex_descriptor>(root), q,
+      boost::make_bfs_visitor(boost::record_predecessors(
+          boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, csr)), boost::on_tree_edge())),
+      cmap);
+  return fromParents(g, root, pred);
+}
+
+SpanningTree kruskalTreeBgl(const GridGraph& g, int root) {
+  if (!validRoot(g, root)) return emptyTree(g, root);
+  const Csr csr = makeCsr(g, true);
+  std::vector<Csr::edge_descriptor> out;
+  boost::kruskal_minimum_spanning_tree(csr, std::back_inserter(out), boost::weight_map(boost::get(&EdgeWeight::w, csr)));
+  std::vector<std::uint8_t> mask(g.size(), 0);
+  for (const auto& e : out) addMask(g, mask, static_cast<int>(boost::source(e, csr)), static_cast<int>(boost::target(e, csr)));
+  return orient(g, root, mask);
+}
+
+SpanningTree kruskalTreePlain(const GridGraph& g, int root) {
+  if (!validRoot(g, root)) return emptyTree(g, root);
+  struct E {
+    long w;
+    int a, b;
+  };
+  std::vector<E> es;
+  for (int v = 0; v < static_cast<int>(g.size()); ++v)
+    for (int d : {kEast, kNorth}) {  // each undirected edge once
+      const int u = g.neighbour(v, d);
+      if (u < 0) continue;
+      const long horizontal = d == kEast;
+      es.push_back({(horizontal ? 1L : 2L) * 4L * static_cast<long>(g.size()) + 2L * v + (horizontal ? 0 : 1), v, u});
+    }
+  std::sort(es.begin(), es.end(), [](const E& x, const E& y) { return x.w < y.w; });
+  std::vector<int> parent(g.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+      parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      x = parent[static_cast<std::size_t>(x)];
+    }
+    return x;
+  };
+  std::vector<std::uint8_t> mask(g.size(), 0);
+  for (const E& e : es) {
+    const int ra = find(e.a), rb = find(e.b);
+    if (ra == rb) continue;
+    parent[static_cast<std::size_t>(ra)] = rb;
+    addMask(g, mask, e.a, e.b);
+  }
+  return orient(g, root, mask);
+}
+
+}  // namespace coverkit::graph

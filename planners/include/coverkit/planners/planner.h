@@ -1,0 +1,95 @@
+#pragma once
+// The planner interface (after OMPL's Planner): one pure virtual does the work and returns a Plan
+// whose status carries expected outcomes; only misuse and bad input throw (InputError).
+#include <coverkit/geometry/cell_grid.h>
+#include <coverkit/geometry/path.h>
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coverkit::planners {
+
+enum class ParamType { kInt, kDouble, kBool, kChoice };
+const char* toString(ParamType t);
+
+/// A declared parameter. `range` is "lo:hi" for numbers (inclusive) or "a|b|c" for choices.
+struct ParamSpec {
+  std::string name;
+  ParamType type = ParamType::kDouble;
+  std::string defaultValue;
+  std::string range;
+  std::string help;
+};
+
+/// Resolved parameter values (text), validated against the specs.
+class ParamSet {
+public:
+  ParamSet() = default;
+  /// Validates `given` (KEY → VALUE) against `specs`, filling defaults. Throws InputError for an
+  /// unknown key, a value of the wrong type or out of range.
+  ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner);
+  const std::string& text(const std::string& name) const;
+  double number(const std::string& name) const;
+  long integer(const std::string& name) const;
+  bool flag(const std::string& name) const;
+  const std::map<std::string, std::string>& all() const { return values_; }
+
+private:
+  std::map<std::string, std::string> values_;
+};
+
+struct Capabilities {
+  bool online = false;
+  bool multiRobot = false;
+  bool needsCells = true;
+  std::string output = "lines";   ///< "lines" or "lines+arcs"
+};
+
+/// Stops a planner: a deadline (or none).
+class TerminationCondition {
+public:
+  TerminationCondition() = default;
+  explicit TerminationCondition(double seconds)
+      : deadline_(std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds))),
+        bounded_(seconds > 0) {}
+  bool expired() const { return bounded_ && std::chrono::steady_clock::now() > deadline_; }
+
+private:
+  std::chrono::steady_clock::time_point deadline_{};
+  bool bounded_ = false;
+};
+
+/// What every planner gets: the problem and the shared, once-computed products.
+struct PlanningContext {
+  Problem problem;
+  CellGrid cells;                      ///< exact classification with D = problem.subCellSize()
+  double cellSeconds = 0;              ///< time spent classifying (reported as a phase)
+};
+
+/// Builds the context: checks the robot and start (InputError), classifies cells once, and fills in
+/// the default start where none was given (see defaultStart).
+PlanningContext makeContext(Problem problem);
+
+/// The documented default start: the centre of the first free sub-cell, in row order from the
+/// bottom-left, that lies in a free mega-cell of the largest 4-connected component of free
+/// mega-cells; without free mega-cells, the first free sub-cell of the largest 4-connected component
+/// of free sub-cells. Nothing free: nullopt. The point is the double nearest the centre on the side
+/// of its mega-cell's centre, read exactly, so a path file can state it exactly.
+std::optional<Point> defaultStart(const CellGrid& cells);
+
+class Planner {
+public:
+  virtual ~Planner() = default;
+  virtual std::string name() const = 0;
+  virtual std::string description() const = 0;
+  virtual std::vector<ParamSpec> params() const = 0;
+  virtual Capabilities capabilities() const = 0;
+  /// Plans. Bad parameters were rejected before (ParamSet); planning outcomes are statuses.
+  virtual Plan plan(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop) = 0;
+};
+
+}  // namespace coverkit::planners

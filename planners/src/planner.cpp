@@ -1,0 +1,148 @@
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/planner.h>
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+namespace coverkit::planners {
+
+const char* toString(ParamType t) {
+  switch (t) {
+    case ParamType::kInt: return "int";
+    case ParamType::kDouble: return "double";
+    case ParamType::kBool: return "bool";
+    case ParamType::kChoice: return "choice";
+  }
+  return "?";
+}
+
+namespace {
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) out.push_back(cur);
+  return out;
+}
+}  // namespace
+
+ParamSet::ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner) {
+  for (const auto& [key, value] : given) {
+    auto it = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == key; });
+    if (it == specs.end()) {
+      std::string known;
+      for (const auto& s : specs) known += (known.empty() ? "" : ", ") + s.name;
+      throw InputError("--param", key, "unknown parameter of planner '" + planner + "' (known: " + (known.empty() ? "none" : known) + ")");
+    }
+  }
+  for (const ParamSpec& s : specs) {
+    auto it = given.find(s.name);
+    const std::string v = it == given.end() ? s.defaultValue : it->second;
+    const std::string place = s.name + "=" + v;
+    if (s.type == ParamType::kChoice) {
+      const auto choices = split(s.range, '|');
+      if (std::find(choices.begin(), choices.end(), v) == choices.end())
+        throw InputError("--param", place, "must be one of " + s.range);
+    } else if (s.type == ParamType::kBool) {
+      if (v != "true" && v != "false") throw InputError("--param", place, "must be true or false");
+    } else {
+      const Rational q = parseRational(v, "--param", place);
+      if (s.type == ParamType::kInt && q.get_den() != 1) throw InputError("--param", place, "must be an integer");
+      const auto lim = split(s.range, ':');
+      if (lim.size() == 2) {
+        if ((!lim[0].empty() && q < parseRational(lim[0])) || (!lim[1].empty() && q > parseRational(lim[1])))
+          throw InputError("--param", place, "out of range [" + s.range + "]");
+      }
+    }
+    values_[s.name] = v;
+  }
+}
+
+const std::string& ParamSet::text(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) throw std::logic_error("undeclared parameter " + name);
+  return it->second;
+}
+double ParamSet::number(const std::string& name) const { return parseRational(text(name)).get_d(); }
+long ParamSet::integer(const std::string& name) const { return static_cast<long>(parseRational(text(name)).get_d()); }
+bool ParamSet::flag(const std::string& name) const { return text(name) == "true"; }
+
+std::optional<Point> defaultStart(const CellGrid& cells) {
+  // Largest 4-connected component over a predicate; returns its first cell in row order.
+  auto firstOfLargest = [](int cols, int rows, auto&& ok) -> std::optional<CellIndex> {
+    std::vector<int> comp(static_cast<std::size_t>(cols) * rows, -1);
+    std::size_t bestSize = 0;
+    int bestFirst = -1;
+    std::vector<int> stack;
+    int id = 0;
+    for (int v = 0; v < cols * rows; ++v) {
+      if (!ok(v % cols, v / cols) || comp[static_cast<std::size_t>(v)] >= 0) continue;
+      std::size_t size = 0;
+      comp[static_cast<std::size_t>(v)] = id;
+      stack.push_back(v);
+      while (!stack.empty()) {
+        const int u = stack.back();
+        stack.pop_back();
+        ++size;
+        const int c = u % cols, r = u / cols;
+        const int nb[4][2] = {{c + 1, r}, {c - 1, r}, {c, r + 1}, {c, r - 1}};
+        for (auto& n : nb) {
+          if (n[0] < 0 || n[1] < 0 || n[0] >= cols || n[1] >= rows || !ok(n[0], n[1])) continue;
+          const int w = n[1] * cols + n[0];
+          if (comp[static_cast<std::size_t>(w)] >= 0) continue;
+          comp[static_cast<std::size_t>(w)] = id;
+          stack.push_back(w);
+        }
+      }
+      if (size > bestSize) {
+        bestSize = size;
+        bestFirst = v;  // v is the first cell of its component in row order
+      }
+      ++id;
+    }
+    if (bestFirst < 0) return std::nullopt;
+    return CellIndex{bestFirst % cols, bestFirst / cols};
+  };
+  auto mega = firstOfLargest(cells.megaCols(), cells.megaRows(), [&](int c, int r) { return cells.mega(c, r) == CellState::kFree; });
+  if (mega) {
+    // first sub-cell in row order of that mega-cell: its bottom-left quadrant. Its centre is taken
+    // as the double next to it towards the mega-cell's centre (the waypoint STC uses), so that the
+    // start as written in a path file is exactly the start.
+    const Point c = cells.subCenter(2 * mega->col, 2 * mega->row), m = cells.megaCenter(mega->col, mega->row);
+    return Point{exactFromDouble(roundToward(c.x, m.x)), exactFromDouble(roundToward(c.y, m.y))};
+  }
+  auto sub = firstOfLargest(cells.subCols(), cells.subRows(), [&](int c, int r) { return cells.sub(c, r) == CellState::kFree; });
+  if (sub) {
+    const Point c = cells.subCenter(sub->col, sub->row);
+    return Point{exactFromDouble(toDouble(c.x)), exactFromDouble(toDouble(c.y))};
+  }
+  return std::nullopt;
+}
+
+PlanningContext makeContext(Problem problem) {
+  const std::string& name = problem.workspace.name;
+  if (problem.robots.empty()) throw InputError(name, "robots", "no robot");
+  if (problem.workspace.regions.empty()) throw InputError(name, "workspace", "empty free space");
+  const Box b = problem.workspace.bbox();
+  for (std::size_t i = 0; i < problem.robots.size(); ++i) {
+    const Robot& r = problem.robots[i];
+    if (r.radius <= 0) throw InputError("--radius", formatDouble(r.radius.get_d()), "robot radius must be > 0");
+    if (2 * r.radius > b.xmax - b.xmin || 2 * r.radius > b.ymax - b.ymin)
+      throw InputError("--radius", formatDouble(r.radius.get_d()), "robot is larger than the workspace (" + name + ")");
+    if (r.start && !strictlyInside(problem.workspace, *r.start))
+      throw InputError("--start", formatDouble(r.start->x.get_d()) + "," + formatDouble(r.start->y.get_d()),
+                       "start is outside the workspace or inside an obstacle of " + name);
+  }
+  if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", "", "must be > 0");
+  PlanningContext ctx;
+  const auto t0 = std::chrono::steady_clock::now();
+  ctx.cells = classifyCells(problem.workspace, problem.subCellSize());
+  ctx.cellSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (Robot& r : problem.robots)
+    if (!r.start) r.start = defaultStart(ctx.cells);
+  ctx.problem = std::move(problem);
+  return ctx;
+}
+
+}  // namespace coverkit::planners

@@ -1,0 +1,160 @@
+// STC skeleton and offline STC. See stc_skeleton.h for the reference.
+//
+// Decisions (where the papers are silent):
+//  - Circumnavigation is counter-clockwise around the tree (the robot keeps the tree on its left,
+//    i.e. moves "along the right side" of each edge as Gabriely & Rimon put it, and as Algorithm 1
+//    of Pham et al. says: "anticlockwise").
+//  - Waypoints are sub-cell centres. Their doubles are rounded towards the centre of their
+//    mega-cell, never away: a free mega-cell lies in W, the disc at the rounded point stays inside
+//    the mega-cell, and a move between adjacent mega-cells stays inside their union (a rectangle),
+//    so the path is safe exactly as written even when a centre is not a double (e.g. D = 0.4).
+//  - A start that is not a sub-cell centre is joined to its sub-cell's centre by a straight move,
+//    checked exactly; if that move is not clear the plan's status is invalid_start.
+//  - The tour returns to the start sub-cell and then to the start point.
+#include <coverkit/geometry/validate.h>
+#include <coverkit/planners/stc_skeleton.h>
+
+#include <chrono>
+
+namespace coverkit::planners {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+std::string StcPlanner::description() const {
+  return "Spanning Tree Coverage (Gabriely & Rimon 2001), offline: free mega-cells, a spanning tree, "
+         "counter-clockwise circumnavigation through sub-cell centres back to the start";
+}
+
+std::vector<ParamSpec> StcSkeleton::params() const {
+  return {{"tree", ParamType::kChoice, "dfs_ccw", "dfs_ccw|bfs|kruskal_straight",
+           "spanning-tree strategy: depth-first counter-clockwise (the papers'), breadth-first, or Kruskal favouring straight runs"}};
+}
+
+Capabilities StcSkeleton::capabilities() const { return {}; }
+
+graph::GridGraph StcSkeleton::buildGraph(const PlanningContext& ctx) const {
+  const CellGrid& cells = ctx.cells;
+  graph::GridGraph g(cells.megaCols(), cells.megaRows());
+  for (int r = 0; r < cells.megaRows(); ++r)
+    for (int c = 0; c < cells.megaCols(); ++c) g.active[static_cast<std::size_t>(g.id(c, r))] = cells.mega(c, r) == CellState::kFree;
+  return g;
+}
+
+graph::SpanningTree StcSkeleton::growTree(const graph::GridGraph& g, int root, const ParamSet& params) const {
+  graph::TreeStrategy s = graph::TreeStrategy::kDfsCcw;
+  graph::parseTreeStrategy(params.text("tree"), s);
+  return graph::buildTree(g, root, s);
+}
+
+std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, const graph::SpanningTree& tree, CellIndex start) const {
+  // Quadrants counter-clockwise: 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left.
+  // From quadrant q the robot moves in direction q (E, N, W, S) to quadrant q+1 of the same
+  // mega-cell, unless the tree has an edge on the arm it would cross (direction q+3): then it moves
+  // in that direction into the neighbour, arriving in quadrant q+3.
+  const int mcols = ctx.cells.megaCols();
+  int mc = start.col / 2, mr = start.row / 2;
+  int q = (start.row % 2 == 0) ? (start.col % 2 == 0 ? 0 : 1) : (start.col % 2 == 0 ? 3 : 2);
+  const int q0 = q, mc0 = mc, mr0 = mr;
+  auto sub = [](int c, int r, int quad) { return CellIndex{2 * c + (quad == 1 || quad == 2), 2 * r + (quad >= 2)}; };
+  std::vector<CellIndex> walk{sub(mc, mr, q)};
+  walk.reserve(4 * tree.nodes + 1);
+  do {
+    const int arm = (q + 3) & 3;
+    if (tree.edges[static_cast<std::size_t>(mr * mcols + mc)] >> arm & 1) {
+      mc += graph::kDx[arm];
+      mr += graph::kDy[arm];
+      q = arm;
+    } else {
+      q = (q + 1) & 3;
+    }
+    walk.push_back(sub(mc, mr, q));
+  } while (!(q == q0 && mc == mc0 && mr == mr0));
+  return walk;
+}
+
+Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition&) {
+  Plan plan;
+  plan.planner = name();
+  const CellGrid& cells = ctx.cells;
+  const Robot& robot = ctx.problem.robots.at(0);
+  Path path;
+  if (!robot.start) {
+    plan.status = PlanStatus::kNoFreeSpace;
+    plan.message = "no free sub-cell for a default start";
+    plan.paths.push_back(path);
+    return plan;
+  }
+  const Point start = *robot.start;
+  path.start = {toDouble(start.x), toDouble(start.y)};
+  plan.paths.push_back(path);
+
+  auto t = Clock::now();
+  const graph::GridGraph g = buildGraph(ctx);
+  plan.timings.emplace_back("graph", since(t));
+  std::size_t active = 0;
+  for (auto a : g.active) active += a;
+  plan.statistics["mega_cells_used"] = static_cast<double>(active);
+
+  CellIndex s;
+  if (!cells.locateSub(start, s) || !g.active[static_cast<std::size_t>(g.id(s.col / 2, s.row / 2))]) {
+    plan.status = PlanStatus::kInvalidStart;
+    plan.message = "the start is not in a mega-cell this planner can use (STC needs a free mega-cell)";
+    return plan;
+  }
+  t = Clock::now();
+  const graph::SpanningTree tree = growTree(g, g.id(s.col / 2, s.row / 2), params);
+  plan.timings.emplace_back("tree", since(t));
+  plan.statistics["tree_nodes"] = static_cast<double>(tree.nodes);
+  for (int v = 0; v < static_cast<int>(g.size()); ++v) {
+    const int p = tree.parent[static_cast<std::size_t>(v)];
+    if (p < 0) continue;
+    const Point a = cells.megaCenter(g.col(p), g.row(p)), b = cells.megaCenter(g.col(v), g.row(v));
+    plan.treeEdges.push_back({{a.x.get_d(), a.y.get_d()}, {b.x.get_d(), b.y.get_d()}});
+  }
+
+  t = Clock::now();
+  const std::vector<CellIndex> walk = circumnavigate(ctx, tree, s);
+  // waypoints, rounded towards their mega-cell's centre
+  auto waypoint = [&](CellIndex c) {
+    const Point p = cells.subCenter(c.col, c.row), m = cells.megaCenter(c.col / 2, c.row / 2);
+    return PointD{roundToward(p.x, m.x), roundToward(p.y, m.y)};
+  };
+  std::vector<PointD> pts;
+  pts.reserve(walk.size() + 2);
+  pts.push_back(path.start);
+  for (CellIndex c : walk) pts.push_back(waypoint(c));
+  pts.push_back(path.start);
+  const PointD first = pts[1];
+  if ((first.x != path.start.x || first.y != path.start.y) &&
+      !segmentClear(ctx.problem.workspace, robot.radius, start, Point{exactFromDouble(first.x), exactFromDouble(first.y)})) {
+    plan.status = PlanStatus::kInvalidStart;
+    plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
+    return plan;
+  }
+  // merge collinear moves (same axis, same direction, same fixed coordinate)
+  Path& out = plan.paths[0];
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const PointD a = out.segments.empty() ? pts[0] : out.segments.back().to, b = pts[i];
+    if (a.x == b.x && a.y == b.y) continue;
+    if (!out.segments.empty()) {
+      PathSegment& last = out.segments.back();
+      const bool sameX = last.from.x == last.to.x && last.to.x == b.x && ((last.to.y - last.from.y > 0) == (b.y - last.to.y > 0));
+      const bool sameY = last.from.y == last.to.y && last.to.y == b.y && ((last.to.x - last.from.x > 0) == (b.x - last.to.x > 0));
+      if (sameX || sameY) {
+        last.to = b;
+        continue;
+      }
+    }
+    out.segments.push_back(PathSegment::line(a, b));
+  }
+  plan.timings.emplace_back("path", since(t));
+  plan.statistics["subcells_in_tour"] = static_cast<double>(walk.size() - 1);
+  plan.status = PlanStatus::kExactSolution;
+  plan.message = "covered every sub-cell of the start's component of free mega-cells";
+  return plan;
+}
+
+}  // namespace coverkit::planners

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# The command line on good and bad input: bad input gets exit code 2, a message naming the file or
+# option, the place and the problem, and no output file.
+set -u
+CK="$1"; DATA="$2"; T="$3"
+rm -rf "$T"; mkdir -p "$T"
+fails=0; passes=0
+ok() { passes=$((passes + 1)); }
+bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+# expect_bad "description" "expected message fragment" args...
+expect_bad() {
+  local what="$1" frag="$2"; shift 2
+  rm -f "$T/out.json" "$T/out.png"
+  "$CK" "$@" > "$T/stdout" 2> "$T/stderr"; local rc=$?
+  if [ $rc -ne 2 ]; then bad "$what: exit $rc, expected 2 ($(cat "$T/stderr"))"; return; fi
+  if ! grep -qF -- "$frag" "$T/stderr"; then bad "$what: message lacks '$frag': $(cat "$T/stderr")"; return; fi
+  if [ -e "$T/out.json" ] || [ -e "$T/out.png" ] || ls "$T"/*.tmp-coverkit >/dev/null 2>&1; then bad "$what: wrote an output file"; return; fi
+  ok
+}
+plan() { echo plan --planner stc --radius "${1:-0.25}" --out "$T/out.json" --picture "$T/out.png" --map; }
+
+printf 'image: x.pgm\norigin: [0, 0, 0]\n' > "$T/nores.yaml"
+printf 'image: x.pgm\nresolution: 0\n' > "$T/zerores.yaml"
+printf 'image: x.pgm\nresolution: -0.05\n' > "$T/negres.yaml"
+printf 'image: nothere.pgm\nresolution: 0.05\n' > "$T/noimg.yaml"
+printf 'P5\n100 100\n255\nshort' > "$T/trunc.pgm"; printf 'image: trunc.pgm\nresolution: 0.05\n' > "$T/trunc.yaml"
+printf 'GIF89a not a pgm' > "$T/gif.pgm"; printf 'image: gif.pgm\nresolution: 0.05\n' > "$T/gif.yaml"
+printf 'type octile\nwidht 3\nheight 2\nmap\n...\n...\n' > "$T/hdr.map"
+printf 'type octile\nheight 2\nwidth 4\nmap\n....\n..\n' > "$T/short.map"
+printf 'POLYGON((0 0, 10 0, 10 10' > "$T/broken.wkt"
+printf '{"type": "Polygon", "coordinates": [[[0,0],[1,0]' > "$T/broken.geojson"
+printf 'POLYGON((0 0, 10 10, 10 0, 0 10, 0 0))' > "$T/bowtie.wkt"
+printf 'POLYGON((0 0, 10 0, 10 10, 0 10, 0 0),(20 20, 21 20, 21 21, 20 20))' > "$T/holeout.wkt"
+printf 'POLYGON((0 0, NaN 0, 10 10, 0 10, 0 0))' > "$T/nan.wkt"
+printf '{"type":"Polygon","coordinates":[[[0,0],[1e999,0],[1,1],[0,0]]]}' > "$T/inf.geojson"
+printf '####\n####\n' > "$T/full.grid"
+printf 'POLYGON((0 0, 10 0, 10 10, 0 10, 0 0),(4 4, 6 4, 6 6, 4 6, 4 4))' > "$T/room.wkt"
+
+expect_bad "missing map" "nothere.map: file not found" $(plan) "$T/nothere.map"
+expect_bad "yaml without resolution" "resolution: missing" $(plan) "$T/nores.yaml"
+expect_bad "resolution 0" "resolution: must be > 0" $(plan) "$T/zerores.yaml"
+expect_bad "resolution < 0" "resolution: must be > 0" $(plan) "$T/negres.yaml"
+expect_bad "image missing" "image: image file" $(plan) "$T/noimg.yaml"
+expect_bad "truncated pgm" "truncated PGM" $(plan) "$T/trunc.yaml"
+expect_bad "not a pgm" "not a PGM" $(plan) "$T/gif.yaml"
+expect_bad "moving ai header" "hdr.map: line 2: bad Moving AI header" $(plan) "$T/hdr.map"
+expect_bad "moving ai short row" "short.map: line 6: row has 2 cells, width is 4" $(plan) "$T/short.map"
+expect_bad "wkt syntax" "broken.wkt: line 1 column" $(plan) "$T/broken.wkt"
+expect_bad "geojson syntax" "GeoJSON does not parse" $(plan) "$T/broken.geojson"
+expect_bad "self-intersecting" "self-intersecting ring" $(plan) "$T/bowtie.wkt"
+expect_bad "hole outside" "hole is outside its outer ring" $(plan) "$T/holeout.wkt"
+expect_bad "NaN" "not finite" $(plan) "$T/nan.wkt"
+expect_bad "infinite" "GeoJSON does not parse" $(plan) "$T/inf.geojson"
+expect_bad "empty free space" "empty free space" $(plan) "$T/full.grid"
+expect_bad "radius 0" "--radius: 0: robot radius must be > 0" $(plan 0) "$T/room.wkt"
+expect_bad "radius < 0" "robot radius must be > 0" $(plan -1) "$T/room.wkt"
+expect_bad "radius too large" "robot is larger than the workspace" $(plan 8) "$T/room.wkt"
+expect_bad "start outside" "--start: 20,1: start is outside the workspace or inside an obstacle" $(plan) "$T/room.wkt" --start 20,1
+expect_bad "start in obstacle" "inside an obstacle" $(plan) "$T/room.wkt" --start 5,5
+expect_bad "unknown planner" "--planner: nope: unknown planner (known: " plan --planner nope --radius 0.25 --out "$T/out.json" --map "$T/room.wkt"
+expect_bad "unknown parameter" "--param: depth: unknown parameter" $(plan) "$T/room.wkt" --param depth=3
+expect_bad "parameter out of range" "--param: tree=random: must be one of" $(plan) "$T/room.wkt" --param tree=random
+expect_bad "unknown output format" "unknown output format '.txt'" plan --planner stc --radius 0.25 --out "$T/out.txt" --map "$T/room.wkt"
+expect_bad "unknown picture format" "unknown picture format" plan --planner stc --radius 0.25 --out "$T/out.json" --picture "$T/out.bmp" --map "$T/room.wkt"
+expect_bad "missing path file" "file not found" evaluate --map "$T/room.wkt" --path "$T/none.json"
+expect_bad "bad CLI flag" "" plan --bogus
+
+# good input
+if "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.json" --picture "$T/good.svg" > "$T/stdout"; then ok; else bad "plan failed"; fi
+[ -s "$T/good.svg" ] && ok || bad "no picture"
+if "$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/good.json" --json > "$T/eval.json"; then ok; else bad "evaluate failed: $(cat "$T/eval.json")"; fi
+grep -q '"valid": true' "$T/eval.json" && grep -q '"violations": \[\]' "$T/eval.json" && grep -q '"area_coverage"' "$T/eval.json" && ok || bad "evaluate JSON: $(head -c 300 "$T/eval.json")"
+"$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/again.json" > /dev/null
+cmp -s "$T/good.json" "$T/again.json" && ok || bad "same input, different output"
+"$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.csv" > /dev/null && head -1 "$T/good.csv" | grep -q '^robot,seq,x,y$' && ok || bad "csv"
+"$CK" evaluate --map "$DATA/pillars.wkt" --radius 0.25 --path "$T/good.csv" > /dev/null && ok || bad "evaluate csv"
+"$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.geojson" > /dev/null && grep -q LineString "$T/good.geojson" && ok || bad "geojson"
+"$CK" render --map "$DATA/office.yaml" --radius 0.1 --planner stc --cells --tree --out "$T/render.png" && [ -s "$T/render.png" ] && ok || bad "render"
+"$CK" list | grep -q '^stc:' && ok || bad "list"
+"$CK" plan --help | grep -q -- '--planner' && ok || bad "help"
+# a path that cuts through the obstacle is reported invalid (exit 1), with the segment
+cat > "$T/cut.json" <<'JSON'
+{"format":"coverkit.path/1","planner":"hand","robot_radius":0.25,"robots":[{"start":[1,5],"segments":[{"type":"line","from":[1,5],"to":[9,5]}]}]}
+JSON
+"$CK" evaluate --map "$T/room.wkt" --path "$T/cut.json" --json > "$T/cut.out"; rc=$?
+[ $rc -eq 1 ] && grep -q '"valid": false' "$T/cut.out" && grep -q '"kind": "clearance"' "$T/cut.out" && ok || bad "cut path not caught (rc $rc)"
+
+echo "$passes passed, $fails failed"
+[ $fails -eq 0 ]

@@ -1,0 +1,180 @@
+#include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/cell_grid.h>
+#include <coverkit/geometry/error.h>
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+using namespace coverkit;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path tmpDir() {
+  fs::path d = fs::path(COVERKIT_TEST_TMP) / "readers";
+  fs::create_directories(d);
+  return d;
+}
+std::string write(const std::string& name, const std::string& content) {
+  const fs::path p = tmpDir() / name;
+  std::ofstream(p, std::ios::binary) << content;
+  return p.string();
+}
+std::string pgm(int w, int h, const std::vector<int>& px) {
+  std::string s = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+  for (int v : px) s += static_cast<char>(v);
+  return s;
+}
+/// Expects an InputError whose message contains `what`.
+template <class F>
+void expectInputError(F&& f, const std::string& what) {
+  try {
+    f();
+    ADD_FAILURE() << "no error; expected: " << what;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
+TEST(RosMap, PixelSquaresFollowMapServer) {
+  // 4x3 image, one occupied pixel at row 0 (top), column 1
+  std::vector<int> px(12, 254);
+  px[1] = 0;
+  write("one.pgm", pgm(4, 3, px));
+  const std::string yaml = write("one.yaml", "image: one.pgm\nresolution: 0.05\norigin: [-1.0, 2.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const Workspace w = datasets::readRosMap(yaml);
+  ASSERT_EQ(w.regions.size(), 1u);
+  // free area: 11 pixels of 1/400
+  EXPECT_EQ(freeArea(w), Rational(11, 400));
+  const Box b = w.bbox();
+  EXPECT_EQ(b.xmin, Rational(-1));
+  EXPECT_EQ(b.ymin, Rational(2));
+  EXPECT_EQ(b.xmax, Rational(-1) + ratio(4, 20));
+  // the occupied pixel is the square origin + res·[1,2] × res·[H-1-0, H-0] = x [-0.95,-0.9], y [2.1, 2.15]
+  EXPECT_FALSE(strictlyInside(w, {ratio(-925, 1000), ratio(2125, 1000)}));
+  EXPECT_TRUE(strictlyInside(w, {ratio(-975, 1000), ratio(2125, 1000)}));
+}
+
+TEST(RosMap, ThresholdsNegateAndUnknown) {
+  // values: free (254), occupied (0), unknown (205)
+  write("three.pgm", pgm(3, 1, {254, 0, 205}));
+  const std::string y = write("three.yaml", "image: three.pgm\nresolution: 1\norigin: [0, 0, 0]\n");
+  EXPECT_EQ(freeArea(datasets::readRosMap(y)), Rational(1));
+  datasets::MapOptions o;
+  o.unknownIsFree = true;
+  EXPECT_EQ(freeArea(datasets::readRosMap(y, o)), Rational(2));
+  const std::string yn = write("threen.yaml", "image: three.pgm\nresolution: 1\norigin: [0, 0, 0]\nnegate: 1\n");
+  EXPECT_EQ(freeArea(datasets::readRosMap(yn)), Rational(1));  // now 0 is free, 254 occupied
+}
+
+TEST(RosMap, RgbaPngWithTransparentUnknown) {
+  png_image img;
+  std::memset(&img, 0, sizeof img);
+  img.version = PNG_IMAGE_VERSION;
+  img.width = 2;
+  img.height = 2;
+  img.format = PNG_FORMAT_RGBA;
+  const unsigned char px[16] = {255, 255, 255, 255, 0, 0, 0, 255, 255, 255, 255, 0, 250, 250, 250, 255};
+  const std::string png = (tmpDir() / "rgba.png").string();
+  ASSERT_TRUE(png_image_write_to_file(&img, png.c_str(), 0, px, 0, nullptr));
+  const std::string y = write("rgba.yaml", "image: rgba.png\nresolution: 0.5\norigin: [0, 0, 0]\n");
+  EXPECT_EQ(freeArea(datasets::readRosMap(y)), ratio(2, 4));  // white and near-white; black occupied; transparent unknown
+}
+
+TEST(RosMap, BadInput) {
+  write("ok.pgm", pgm(2, 2, {254, 254, 254, 254}));
+  expectInputError([] { datasets::readRosMap((tmpDir() / "missing.yaml").string()); }, "file not found");
+  expectInputError([] { datasets::readRosMap(write("nores.yaml", "image: ok.pgm\norigin: [0,0,0]\n")); }, "resolution: missing");
+  expectInputError([] { datasets::readRosMap(write("zero.yaml", "image: ok.pgm\nresolution: 0\n")); }, "resolution: must be > 0");
+  expectInputError([] { datasets::readRosMap(write("neg.yaml", "image: ok.pgm\nresolution: -0.1\n")); }, "must be > 0");
+  expectInputError([] { datasets::readRosMap(write("noimg.yaml", "image: nothere.pgm\nresolution: 0.1\n")); }, "not found");
+  write("trunc.pgm", "P5\n10 10\n255\nabc");
+  expectInputError([] { datasets::readRosMap(write("trunc.yaml", "image: trunc.pgm\nresolution: 0.1\n")); }, "truncated PGM");
+  write("notpgm.pgm", "hello world");
+  expectInputError([] { datasets::readRosMap(write("notpgm.yaml", "image: notpgm.pgm\nresolution: 0.1\n")); }, "not a PGM");
+  write("notpng.png", "hello world, not a png");
+  expectInputError([] { datasets::readRosMap(write("notpng.yaml", "image: notpng.png\nresolution: 0.1\n")); }, "not a PNG");
+  write("black.pgm", pgm(2, 2, {0, 0, 0, 0}));
+  expectInputError([] { datasets::readRosMap(write("black.yaml", "image: black.pgm\nresolution: 0.1\n")); }, "empty free space");
+  expectInputError([] { datasets::readRosMap(write("bad.yaml", "image: ok.pgm\nresolution: [1, 2\n")); }, "YAML does not parse");
+}
+
+TEST(MovingAi, ReadsAndRejects) {
+  const std::string ok = write("m.map", "type octile\nheight 2\nwidth 3\nmap\n.@.\n...\n");
+  const Workspace w = datasets::readMovingAi(ok);
+  EXPECT_EQ(freeArea(w), Rational(5));
+  // cell (row 0, col 1) is the unit square [1,2] × [1,2] (first row on top)
+  EXPECT_FALSE(strictlyInside(w, {Rational(3, 2), Rational(3, 2)}));
+  expectInputError([] { datasets::readMovingAi(write("h.map", "type octile\nheigth 2\nwidth 3\nmap\n...\n...\n")); }, "bad Moving AI header");
+  expectInputError([] { datasets::readMovingAi(write("s.map", "type octile\nheight 2\nwidth 3\nmap\n...\n..\n")); }, "row has 2 cells, width is 3");
+  expectInputError([] { datasets::readMovingAi(write("t.map", "type octile\nheight 3\nwidth 3\nmap\n...\n...\n")); }, "missing map row 3");
+  expectInputError([] { datasets::readMovingAi(write("c.map", "type octile\nheight 1\nwidth 3\nmap\n.x.\n")); }, "unknown terrain");
+}
+
+TEST(Wkt, PolygonsWithHolesAndErrors) {
+  const Workspace w = datasets::parseWkt("MULTIPOLYGON(((0 0, 4 0, 4 4, 0 4, 0 0),(1 1, 1 2, 2 2, 2 1, 1 1)),((10 0, 12 0, 12 1, 10 0)))", "x.wkt");
+  ASSERT_EQ(w.regions.size(), 2u);
+  EXPECT_EQ(freeArea(w), Rational(16 - 1 + 1));
+  EXPECT_GT(signedArea2(w.regions[0].outer), 0);
+  EXPECT_LT(signedArea2(w.regions[0].holes[0]), 0);
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 1 0, 1 1", "a.wkt"); }, "WKT does not parse");
+  expectInputError([] { datasets::parseWkt("LINESTRING(0 0, 1 1)", "a.wkt"); }, "expected POLYGON");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 2 2, 2 0, 0 2, 0 0))", "a.wkt"); }, "self-intersecting");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 4 0, 4 4, 0 4),(5 5, 6 5, 6 6, 5 5))", "a.wkt"); }, "hole is outside");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, nan 0, 4 4, 0 4))", "a.wkt"); }, "not finite");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, inf 0, 4 4, 0 4))", "a.wkt"); }, "not finite");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 4 0, 4 0, 4 4, 0 4))", "a.wkt"); }, "repeated vertex");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 4 0, 8 0))", "a.wkt"); }, "zero area");
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 4 0, 4 4, 0 4),(1 1, 3 1, 3 5, 1 1))", "a.wkt"); }, "rings intersect");
+}
+
+TEST(GeoJson, MetricAndLonLat) {
+  const Workspace m = datasets::parseGeoJson(R"({"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]],[[1,1],[9,1],[9,9],[1,9],[1,1]]]})", "r.geojson");
+  EXPECT_EQ(freeArea(m), Rational(100 - 64));
+  // a 0.001° × 0.001° square at latitude 60: about 55.6 m × 111.2 m
+  const Workspace ll = datasets::parseGeoJson(
+      R"({"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[10,60],[10.001,60],[10.001,60.001],[10,60.001],[10,60]]]}})", "ll.geojson");
+  const Box b = ll.bbox();
+  EXPECT_NEAR(Rational(b.xmax - b.xmin).get_d(), 6371008.8 * std::cos(60.0005 * M_PI / 180) * 0.001 * M_PI / 180, 0.002);
+  EXPECT_NEAR(Rational(b.ymax - b.ymin).get_d(), 6371008.8 * 0.001 * M_PI / 180, 0.002);
+  expectInputError([] { datasets::parseGeoJson("{\"type\": \"Polygon\", ", "b.geojson"); }, "GeoJSON does not parse");
+  expectInputError([] { datasets::parseGeoJson(R"({"type":"Point","coordinates":[1,2]})", "b.geojson"); }, "unsupported geometry");
+  expectInputError([] { datasets::parseGeoJson(R"({"type":"Polygon","coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]})", "b.geojson"); }, "self-intersecting");
+}
+
+TEST(TextGrid, SameWorldAsPolygonsGivesSameCells) {
+  const Workspace g = datasets::parseTextGrid("resolution 0.5\n........\n..##....\n..##....\n........\n", "t.grid");
+  const Workspace p = datasets::parseWkt("POLYGON((0 0, 4 0, 4 2, 0 2, 0 0),(1 0.5, 2 0.5, 2 1.5, 1 1.5, 1 0.5))", "t.wkt");
+  EXPECT_EQ(freeArea(g), freeArea(p));
+  for (const Rational& D : {Rational(1, 4), Rational(1, 2), Rational(1, 3)}) {
+    const CellGrid a = classifyCells(g, D), b = classifyCells(p, D);
+    ASSERT_EQ(a.subCount(), b.subCount());
+    for (int r = 0; r < a.subRows(); ++r)
+      for (int c = 0; c < a.subCols(); ++c) EXPECT_EQ(a.sub(c, r), b.sub(c, r));
+  }
+  expectInputError([] { datasets::parseTextGrid("...\n..\n", "t.grid"); }, "row has 2 cells");
+  expectInputError([] { datasets::parseTextGrid("###\n###\n", "t.grid"); }, "empty free space");
+}
+
+TEST(GridPolygons, DiagonalPinchesKeepFreeSpace4Connected) {
+  // two free pixels touching at a corner are separate regions
+  const Workspace w = datasets::parseTextGrid(".#\n#.\n", "pinch.grid");
+  EXPECT_EQ(w.regions.size(), 2u);
+  EXPECT_EQ(freeArea(w), Rational(2));
+  // a ring of free cells around an obstacle: one region with one hole; vertices only at corners
+  const Workspace ring = datasets::parseTextGrid("....\n.##.\n.##.\n....\n", "ring.grid");
+  ASSERT_EQ(ring.regions.size(), 1u);
+  ASSERT_EQ(ring.regions[0].holes.size(), 1u);
+  EXPECT_EQ(ring.regions[0].outer.size(), 4u);
+  EXPECT_EQ(ring.regions[0].holes[0].size(), 4u);
+}
+
+TEST(LoadMap, UnknownExtensionAndMissingFile) {
+  expectInputError([] { datasets::loadMap(write("x.xyz", "")); }, "unknown map format");
+  expectInputError([] { datasets::loadMap((tmpDir() / "nope.map").string()); }, "file not found");
+}

@@ -1,0 +1,72 @@
+#include <coverkit/geometry/metrics.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace coverkit;
+
+namespace {
+Problem room(int w, int h, Rational r) {
+  Problem p;
+  Region reg;
+  reg.outer = {{0, 0}, {w, 0}, {w, h}, {0, h}};
+  p.workspace.regions.push_back(reg);
+  p.robots.push_back({r, std::nullopt});
+  return p;
+}
+Path polyline(std::vector<PointD> pts) {
+  Path p;
+  p.start = pts.front();
+  for (std::size_t i = 1; i < pts.size(); ++i) p.segments.push_back(PathSegment::line(pts[i - 1], pts[i]));
+  return p;
+}
+}  // namespace
+
+TEST(Metrics, ExactAreaOfADiscAndAStadium) {
+  const Problem p = room(10, 10, Rational(1));
+  double a = 0;
+  Path dot;
+  dot.start = {5, 5};
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1), {dot}, a));
+  EXPECT_NEAR(a, M_PI, 1e-12);
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1), {polyline({{2, 5}, {8, 5}})}, a));
+  EXPECT_NEAR(a, M_PI + 12, 1e-12);
+  // a Pythagorean direction (3,4) is exact too
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1), {polyline({{2, 2}, {5, 6}})}, a));
+  EXPECT_NEAR(a, M_PI + 10, 1e-12);
+  // clipped by the workspace: a disc centred on the corner has a quarter inside
+  Path corner;
+  corner.start = {0, 0};
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1), {corner}, a));
+  EXPECT_NEAR(a, M_PI / 4, 1e-12);
+  // a generic direction is left to the raster
+  EXPECT_FALSE(exactCoveredArea(p.workspace, Rational(1), {polyline({{2, 2}, {5, 7}})}, a));
+}
+
+TEST(Metrics, RasterAgreesWithExactWithinItsBound) {
+  const Problem p = room(10, 6, Rational(1, 2));
+  const Path path = polyline({{0.5, 0.5}, {9.5, 0.5}, {9.5, 1.5}, {0.5, 1.5}, {0.5, 3.5}, {6, 3.5}, {6, 5.5}});
+  double exact = 0, err = 0;
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1, 2), {path}, exact));
+  for (std::size_t pixels : {20'000u, 200'000u, 2'000'000u}) {
+    const double raster = rasterCoveredArea(p.workspace, Rational(1, 2), {path}, pixels, err);
+    EXPECT_LE(std::abs(raster - exact), err) << pixels;
+    EXPECT_GT(err, 0);
+  }
+}
+
+TEST(Metrics, LengthTurnsAndSubcells) {
+  Problem p = room(4, 4, Rational(1, 2));
+  const CellGrid cells = classifyCells(p.workspace, Rational(1));
+  const Path path = polyline({{0.5, 0.5}, {3.5, 0.5}, {3.5, 1.5}, {0.5, 1.5}, {0.5, 0.5}});
+  const Metrics m = computeMetrics(p, cells, {path});
+  EXPECT_DOUBLE_EQ(m.length, 3 + 1 + 3 + 1);
+  EXPECT_EQ(m.turns, 3u);
+  EXPECT_NEAR(m.turningAngleDeg, 270, 1e-9);
+  EXPECT_EQ(m.freeSubcells, 16u);
+  EXPECT_EQ(m.coveredSubcells, 8u);
+  EXPECT_DOUBLE_EQ(m.subcellCoverage, 0.5);
+  EXPECT_EQ(m.revisitedSubcells, 1u);  // the start cell, entered again at the end
+  EXPECT_EQ(m.areaMethod, "exact");
+}

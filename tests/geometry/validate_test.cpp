@@ -1,0 +1,107 @@
+#include <coverkit/geometry/validate.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace coverkit;
+
+namespace {
+Problem corridor() {
+  // free corridor [0,10] × [0,1] between walls; robot radius 1/2 fits exactly
+  Problem p;
+  Region r;
+  r.outer = {{0, 0}, {10, 0}, {10, 1}, {0, 1}};
+  p.workspace.regions.push_back(r);
+  p.workspace.name = "corridor";
+  p.robots.push_back({Rational(1, 2), Point{Rational(1), Rational(1, 2)}});
+  return p;
+}
+Path line(std::vector<PointD> pts) {
+  Path p;
+  p.start = pts.front();
+  for (std::size_t i = 1; i < pts.size(); ++i) p.segments.push_back(PathSegment::line(pts[i - 1], pts[i]));
+  return p;
+}
+}  // namespace
+
+TEST(Validator, TouchingTheWallExactlyIsAllowed) {
+  const Problem p = corridor();
+  const auto rep = validatePaths(p, {line({{1, 0.5}, {9, 0.5}})});
+  EXPECT_TRUE(rep.valid) << (rep.violations.empty() ? "" : rep.violations[0].detail);
+}
+
+TEST(Validator, OneUlpIntoTheWallIsCaught) {
+  const Problem p = corridor();
+  const double y = std::nextafter(0.5, 0.0);
+  const auto rep = validatePaths(p, {line({{1, 0.5}, {5, y}})});
+  ASSERT_FALSE(rep.valid);
+  EXPECT_EQ(rep.violations[0].kind, "clearance");
+  EXPECT_EQ(rep.violations[0].segment, 0);
+}
+
+TEST(Validator, DiscontinuityAndWrongStart) {
+  Problem p = corridor();
+  Path path = line({{1, 0.5}, {3, 0.5}});
+  path.segments.push_back(PathSegment::line({4, 0.5}, {5, 0.5}));
+  auto rep = validatePaths(p, {path});
+  ASSERT_FALSE(rep.valid);
+  EXPECT_EQ(rep.violations[0].kind, "continuity");
+  EXPECT_EQ(rep.violations[0].segment, 1);
+  p.robots[0].start = Point{Rational(2), Rational(1, 2)};
+  rep = validatePaths(p, {line({{1, 0.5}, {3, 0.5}})});
+  ASSERT_FALSE(rep.valid);
+  EXPECT_EQ(rep.violations[0].kind, "start");
+}
+
+TEST(Validator, PathThroughAHoleIsCaught) {
+  Problem p;
+  Region r;
+  r.outer = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  r.holes.push_back({{4, 4}, {4, 6}, {6, 6}, {6, 4}});
+  p.workspace.regions.push_back(r);
+  p.robots.push_back({Rational(1, 4), Point{Rational(1), Rational(5)}});
+  EXPECT_FALSE(validatePaths(p, {line({{1, 5}, {9, 5}})}).valid);
+  EXPECT_TRUE(validatePaths(p, {line({{1, 5}, {1, 3.75}, {9, 3.75}})}).valid);    // distance exactly 1/4
+  EXPECT_FALSE(validatePaths(p, {line({{1, 5}, {1, 3.8}, {9, 3.8}})}).valid);     // 0.2 < 1/4
+}
+
+TEST(Validator, ArcsAreCheckedExactly) {
+  Problem p;
+  Region r;
+  r.outer = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  r.holes.push_back({{4, 4}, {4, 6}, {6, 6}, {6, 4}});
+  p.workspace.regions.push_back(r);
+  p.robots.push_back({Rational(1, 2), Point{Rational(8), Rational(5)}});
+  // half circle of radius 3 about (5,5) from (8,5) ccw to (2,5): passes (5,8); the square's corner
+  // (6,6) is at distance 3 - sqrt(2) ≈ 1.59 > 1/2 from the circle; clear.
+  Path ok;
+  ok.start = {8, 5};
+  ok.segments.push_back(PathSegment::arc({8, 5}, {2, 5}, {5, 5}, true));
+  EXPECT_TRUE(validatePaths(p, {ok}).valid);
+  // radius 1.5: the corner (6,6) is 1.5 - sqrt(2) ≈ 0.086 away: hits
+  p.robots[0].start = Point{Rational(13, 2), Rational(5)};
+  Path bad;
+  bad.start = {6.5, 5};
+  bad.segments.push_back(PathSegment::arc({6.5, 5}, {3.5, 5}, {5, 5}, true));
+  EXPECT_FALSE(validatePaths(p, {bad}).valid);
+  // the same arc clockwise goes below the square: also hits (symmetry), and a cw arc of radius 3 is clear
+  Path cw;
+  cw.start = {8, 5};
+  cw.segments.push_back(PathSegment::arc({8, 5}, {2, 5}, {5, 5}, false));
+  p.robots[0].start = Point{Rational(8), Rational(5)};
+  EXPECT_TRUE(validatePaths(p, {cw}).valid);
+  // an end point off the circle is reported
+  Path off;
+  off.start = {8, 5};
+  off.segments.push_back(PathSegment::arc({8, 5}, {2, 5.5}, {5, 5}, true));
+  const auto rep = validatePaths(p, {off});
+  ASSERT_FALSE(rep.valid);
+  EXPECT_EQ(rep.violations[0].kind, "arc");
+}
+
+TEST(Validator, SegmentClearPredicate) {
+  const Problem p = corridor();
+  EXPECT_TRUE(segmentClear(p.workspace, Rational(1, 2), {Rational(1), Rational(1, 2)}, {Rational(9), Rational(1, 2)}));
+  EXPECT_FALSE(segmentClear(p.workspace, Rational(1, 2), {Rational(1), Rational(1, 2)}, {Rational(9), Rational(2, 5)}));
+}
