@@ -24,6 +24,8 @@ static GridGraph makeGrid(int side) {
   }                                                                                \
   BENCHMARK(NAME)->RangeMultiplier(4)->Range(64, 1024)->Unit(benchmark::kMillisecond)->Complexity();
 
+static std::size_t csrBuild(const GridGraph& g, int) { return buildCsrOnly(g); }
+COVERKIT_TREE_BENCH(BM_CsrBuildOnly, csrBuild)
 COVERKIT_TREE_BENCH(BM_DfsBgl, dfsTreeBgl)
 COVERKIT_TREE_BENCH(BM_DfsPlain, dfsTreePlain)
 COVERKIT_TREE_BENCH(BM_DfsCcw, dfsCcwTree)

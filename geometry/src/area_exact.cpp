@@ -118,7 +118,7 @@ double polygonArea(const Polygon& pg) {
 
 }  // namespace
 
-bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths, double& area) {
+bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths, double& area, bool pathIsClear) {
   std::vector<Polygon> pieces;
   for (const Path& p : paths) {
     Point cur{exactFromDouble(p.start.x), exactFromDouble(p.start.y)};
@@ -139,13 +139,15 @@ bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<P
   }
   PolygonSet swept;
   swept.join(pieces.begin(), pieces.end());
-  PolygonSet free;
-  for (const Region& reg : w.regions) {
-    std::vector<Polygon> holes;
-    for (const Ring& h : reg.holes) holes.push_back(ringPolygon(h, false));
-    free.join(PolygonWithHoles(ringPolygon(reg.outer, true), holes.begin(), holes.end()));
+  if (!pathIsClear) {
+    PolygonSet free;
+    for (const Region& reg : w.regions) {
+      std::vector<Polygon> holes;
+      for (const Ring& h : reg.holes) holes.push_back(ringPolygon(h, false));
+      free.join(PolygonWithHoles(ringPolygon(reg.outer, true), holes.begin(), holes.end()));
+    }
+    swept.intersection(free);
   }
-  swept.intersection(free);
   std::vector<PolygonWithHoles> out;
   swept.polygons_with_holes(std::back_inserter(out));
   area = 0;

@@ -1,6 +1,8 @@
 // Metrics that need no CGAL: grid coverage, length, turns, raster area. Formulas: docs/metrics.md.
 #include <coverkit/geometry/metrics.h>
 
+#include <coverkit/geometry/validate.h>
+
 #include "edge_index.h"
 
 #include <algorithm>
@@ -95,7 +97,15 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
 
   m.freeArea = freeArea(problem.workspace).get_d();
   double area = 0;
-  if (pieces <= o.exactAreaMaxSegments && exactCoveredArea(problem.workspace, problem.robots.at(0).radius, paths, area)) {
+  // A path the validator accepts sweeps only closure(F): the exact area can skip clipping to F.
+  bool clear = false;
+  if (pieces <= o.exactAreaMaxSegments && paths.size() == problem.robots.size()) {
+    Problem unanchored = problem;  // clearance and continuity only: the start is not a metric's concern
+    for (Robot& rb : unanchored.robots) rb.start.reset();
+    clear = validatePaths(unanchored, paths).valid;
+  }
+  if (pieces <= o.exactAreaMaxSegments &&
+      exactCoveredArea(problem.workspace, problem.robots.at(0).radius, paths, area, clear)) {
     m.areaMethod = "exact";
     m.areaCoverageError = 0;
   } else {

@@ -108,20 +108,32 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
   const graph::SpanningTree tree = growTree(g, g.id(s.col / 2, s.row / 2), params);
   plan.timings.emplace_back("tree", since(t));
   plan.statistics["tree_nodes"] = static_cast<double>(tree.nodes);
+  // Waypoint coordinates depend on the column or the row alone: computed once, exactly, per column
+  // and per row (sub-cell centres rounded towards their mega-cell's centre), so the walk is O(1) a step.
+  std::vector<double> subX(static_cast<std::size_t>(cells.subCols())), subY(static_cast<std::size_t>(cells.subRows()));
+  std::vector<double> megaX(static_cast<std::size_t>(cells.megaCols())), megaY(static_cast<std::size_t>(cells.megaRows()));
+  for (int c = 0; c < cells.subCols(); ++c) {
+    const Point p = cells.subCenter(c, 0), m = cells.megaCenter(c / 2, 0);
+    subX[static_cast<std::size_t>(c)] = roundToward(p.x, m.x);
+    if (c % 2 == 0) megaX[static_cast<std::size_t>(c / 2)] = toDouble(m.x);
+  }
+  for (int r = 0; r < cells.subRows(); ++r) {
+    const Point p = cells.subCenter(0, r), m = cells.megaCenter(0, r / 2);
+    subY[static_cast<std::size_t>(r)] = roundToward(p.y, m.y);
+    if (r % 2 == 0) megaY[static_cast<std::size_t>(r / 2)] = toDouble(m.y);
+  }
+  plan.treeEdges.reserve(tree.nodes);
   for (int v = 0; v < static_cast<int>(g.size()); ++v) {
     const int p = tree.parent[static_cast<std::size_t>(v)];
     if (p < 0) continue;
-    const Point a = cells.megaCenter(g.col(p), g.row(p)), b = cells.megaCenter(g.col(v), g.row(v));
-    plan.treeEdges.push_back({{a.x.get_d(), a.y.get_d()}, {b.x.get_d(), b.y.get_d()}});
+    plan.treeEdges.push_back({{megaX[static_cast<std::size_t>(g.col(p))], megaY[static_cast<std::size_t>(g.row(p))]},
+                              {megaX[static_cast<std::size_t>(g.col(v))], megaY[static_cast<std::size_t>(g.row(v))]}});
   }
 
   t = Clock::now();
   const std::vector<CellIndex> walk = circumnavigate(ctx, tree, s);
   // waypoints, rounded towards their mega-cell's centre
-  auto waypoint = [&](CellIndex c) {
-    const Point p = cells.subCenter(c.col, c.row), m = cells.megaCenter(c.col / 2, c.row / 2);
-    return PointD{roundToward(p.x, m.x), roundToward(p.y, m.y)};
-  };
+  auto waypoint = [&](CellIndex c) { return PointD{subX[static_cast<std::size_t>(c.col)], subY[static_cast<std::size_t>(c.row)]}; };
   std::vector<PointD> pts;
   pts.reserve(walk.size() + 2);
   pts.push_back(path.start);

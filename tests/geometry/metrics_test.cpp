@@ -49,6 +49,9 @@ TEST(Metrics, RasterAgreesWithExactWithinItsBound) {
   const Path path = polyline({{0.5, 0.5}, {9.5, 0.5}, {9.5, 1.5}, {0.5, 1.5}, {0.5, 3.5}, {6, 3.5}, {6, 5.5}});
   double exact = 0, err = 0;
   ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1, 2), {path}, exact));
+  double skipped = 0;  // the path is clear: skipping the clip to F gives the same exact value
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1, 2), {path}, skipped, true));
+  EXPECT_NEAR(skipped, exact, 1e-12);
   for (std::size_t pixels : {20'000u, 200'000u, 2'000'000u}) {
     const double raster = rasterCoveredArea(p.workspace, Rational(1, 2), {path}, pixels, err);
     EXPECT_LE(std::abs(raster - exact), err) << pixels;
