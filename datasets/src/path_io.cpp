@@ -1,4 +1,5 @@
 #include <coverkit/datasets/path_io.h>
+#include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
 
 #include <nlohmann/json.hpp>
@@ -122,13 +123,7 @@ void writePathFile(const std::string& file, const PathDocument& doc) {
 }
 
 PathDocument readPathFile(const std::string& file) {
-  std::error_code ec;
-  if (!fs::exists(file, ec)) throw InputError(file, "", "file not found");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, "", "cannot be read");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = readTextFile(file);
   PathDocument doc;
   if (ext(file) == ".csv") {
     std::istringstream ls(text);

@@ -18,9 +18,7 @@ namespace coverkit::datasets {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string readFile(const std::string& path) {
+std::string readTextFile(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, "", "file not found");
   if (fs::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a file");
@@ -30,6 +28,10 @@ std::string readFile(const std::string& path) {
   ss << in.rdbuf();
   return ss.str();
 }
+
+namespace {
+
+std::string readFile(const std::string& path) { return readTextFile(path); }
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -228,6 +228,7 @@ int main(int argc, char** argv) {
   auto* eval = app.add_subcommand("evaluate", "validate a path file and compute its metrics");
   addMapOptions(eval, false);
   eval->add_option("--path", pathFile, "path file (.json or .csv)")->required();
+  eval->add_option("--start", start, "the robot's start X,Y: the path must begin there (default: wherever it begins)");
   eval->add_flag("--json", json, "print one JSON object");
 
   auto* render = app.add_subcommand("render", "draw a map with its cells, a planner's tree and a path");
@@ -291,7 +292,7 @@ int main(int argc, char** argv) {
       std::cout << planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "
                 << (r.validation.valid ? "yes" : "no") << "; sub-cell coverage " << formatDouble(r.metrics.subcellCoverage) << "; length "
                 << formatDouble(r.metrics.length) << "; wrote " << out << "\n";
-      return succeeded(r.plan.status) ? 0 : 1;
+      return succeeded(r.plan.status) && r.validation.valid ? 0 : 1;
     }
     if (*eval) {
       const datasets::PathDocument doc = datasets::readPathFile(pathFile);
@@ -304,7 +305,9 @@ int main(int argc, char** argv) {
       if (cs.empty() && doc.cellSize > 0) cs = doc.cellSize.get_str();
       Problem problem = makeProblem(map, rad, "", unknownFree, cs);
       problem.robots.assign(std::max<std::size_t>(doc.paths.size(), 1), problem.robots[0]);
-      for (std::size_t i = 0; i < doc.paths.size(); ++i) problem.robots[i].start = Point{exactFromDouble(doc.paths[i].start.x), exactFromDouble(doc.paths[i].start.y)};
+      for (std::size_t i = 0; i < doc.paths.size(); ++i)
+        problem.robots[i].start = start.empty() ? Point{exactFromDouble(doc.paths[i].start.x), exactFromDouble(doc.paths[i].start.y)}
+                                                : experiments::parsePoint(start, "--start");
       const planners::PlanningContext ctx = planners::makeContext(problem);
       const ValidationReport v = validatePaths(ctx.problem, doc.paths);
       const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths);

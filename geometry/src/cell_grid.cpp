@@ -136,6 +136,7 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
       markRows(static_cast<int>(col), a.y < c.y ? a.y : c.y, a.y < c.y ? c.y : a.y);
       continue;
     }
+    if (a.y == c.y && Rational((a.y - y0) / D).get_den() == 1) continue;  // along a row line
     const Point& p = a.x < c.x ? a : c;
     const Point& q = a.x < c.x ? c : a;
     const Rational slope = (q.y - p.y) / (q.x - p.x);
@@ -157,6 +158,12 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
   auto ymin = [&](const Edge& e) -> const Rational& { return e.a->y < e.b->y ? e.a->y : e.b->y; };
   auto ymax = [&](const Edge& e) -> const Rational& { return e.a->y < e.b->y ? e.b->y : e.a->y; };
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return ymin(edges[i]) < ymin(edges[j]); });
+  // Vertical edges (all of them on grid maps) cross every row line at the same x: their column
+  // threshold is computed once instead of once per row.
+  std::vector<long> verticalC0(edges.size(), -1);
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (edges[i].a->x == edges[i].b->x)
+      verticalC0[i] = std::clamp(floorQ(Rational((edges[i].a->x - x0) / D - Rational(1, 2))) + 1, 0L, static_cast<long>(cols));
   std::vector<std::size_t> active;
   std::size_t next = 0;
   std::vector<int> flips(static_cast<std::size_t>(cols) + 1);
@@ -170,6 +177,10 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
       const Point& a = *edges[i].a;
       const Point& c = *edges[i].b;
       if ((a.y > yc) == (c.y > yc)) continue;  // half-open rule
+      if (verticalC0[i] >= 0) {
+        flips[static_cast<std::size_t>(verticalC0[i])] ^= 1;
+        continue;
+      }
       Rational x = a.x + (yc - a.y) * (c.x - a.x) / (c.y - a.y);
       // cells whose centre lies right of x: col > (x - x0)/D - 1/2
       long c0 = floorQ(Rational((x - x0) / D - Rational(1, 2))) + 1;

@@ -96,6 +96,14 @@ double PathSegment::length() const {
   return rad * arcSweep(*this);
 }
 
+Path Path::fromPoints(const std::vector<PointD>& pts) {
+  Path p;
+  if (pts.empty()) return p;
+  p.start = pts.front();
+  for (std::size_t i = 1; i < pts.size(); ++i) p.segments.push_back(PathSegment::line(pts[i - 1], pts[i]));
+  return p;
+}
+
 double Path::length() const {
   double l = 0;
   for (const auto& s : segments) l += s.length();

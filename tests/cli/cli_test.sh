@@ -38,6 +38,7 @@ printf '####\n####\n' > "$T/full.grid"
 printf 'POLYGON((0 0, 10 0, 10 10, 0 10, 0 0),(4 4, 6 4, 6 6, 4 6, 4 4))' > "$T/room.wkt"
 
 expect_bad "missing map" "nothere.map: file not found" $(plan) "$T/nothere.map"
+expect_bad "map is a directory" "is a directory" $(plan) "$T"
 expect_bad "yaml without resolution" "resolution: missing" $(plan) "$T/nores.yaml"
 expect_bad "resolution 0" "resolution: must be > 0" $(plan) "$T/zerores.yaml"
 expect_bad "resolution < 0" "resolution: must be > 0" $(plan) "$T/negres.yaml"
@@ -79,6 +80,8 @@ cmp -s "$T/good.json" "$T/again.json" && ok || bad "same input, different output
 "$CK" render --map "$DATA/office.yaml" --radius 0.1 --planner stc --cells --tree --out "$T/render.png" && [ -s "$T/render.png" ] && ok || bad "render"
 "$CK" list | grep -q '^stc:' && ok || bad "list"
 "$CK" plan --help | grep -q -- '--planner' && ok || bad "help"
+"$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/good.json" --start 1,1 > "$T/start.out"; rc=$?
+[ $rc -eq 1 ] && grep -q "violation \[start\]" "$T/start.out" && ok || bad "start not checked (rc $rc)"
 # a path that cuts through the obstacle is reported invalid (exit 1), with the segment
 cat > "$T/cut.json" <<'JSON'
 {"format":"coverkit.path/1","planner":"hand","robot_radius":0.25,"robots":[{"start":[1,5],"segments":[{"type":"line","from":[1,5],"to":[9,5]}]}]}

@@ -15,12 +15,7 @@ Problem room(int w, int h, Rational r) {
   p.robots.push_back({r, std::nullopt});
   return p;
 }
-Path polyline(std::vector<PointD> pts) {
-  Path p;
-  p.start = pts.front();
-  for (std::size_t i = 1; i < pts.size(); ++i) p.segments.push_back(PathSegment::line(pts[i - 1], pts[i]));
-  return p;
-}
+Path polyline(const std::vector<PointD>& pts) { return Path::fromPoints(pts); }
 }  // namespace
 
 TEST(Metrics, ExactAreaOfADiscAndAStadium) {

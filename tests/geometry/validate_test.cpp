@@ -17,12 +17,7 @@ Problem corridor() {
   p.robots.push_back({Rational(1, 2), Point{Rational(1), Rational(1, 2)}});
   return p;
 }
-Path line(std::vector<PointD> pts) {
-  Path p;
-  p.start = pts.front();
-  for (std::size_t i = 1; i < pts.size(); ++i) p.segments.push_back(PathSegment::line(pts[i - 1], pts[i]));
-  return p;
-}
+Path line(const std::vector<PointD>& pts) { return Path::fromPoints(pts); }
 }  // namespace
 
 TEST(Validator, TouchingTheWallExactlyIsAllowed) {

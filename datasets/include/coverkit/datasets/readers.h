@@ -26,6 +26,9 @@ struct OccupancyGrid {
   bool at(int col, int row) const { return blocked[static_cast<std::size_t>(row) * width + col] != 0; }
 };
 
+/// The whole file as bytes; InputError when it is missing, a directory or unreadable.
+std::string readTextFile(const std::string& path);
+
 /// Dispatches on the file extension.
 Workspace loadMap(const std::string& path, const MapOptions& options = {});
 

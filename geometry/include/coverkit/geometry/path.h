@@ -26,6 +26,8 @@ struct PathSegment {
 struct Path {
   PointD start;
   std::vector<PathSegment> segments;
+  /// A polyline through the points (line segments), starting at the first.
+  static Path fromPoints(const std::vector<PointD>& points);
   double length() const;
   /// Points along the path, arcs sampled so the chord error is at most `tolerance`.
   std::vector<PointD> polyline(double tolerance) const;
