@@ -39,7 +39,7 @@ public:
   void step(const std::string& what) {
     ++done_;
     if (!tty_ || std::chrono::steady_clock::now() - t0_ < std::chrono::seconds(1)) return;
-    const int width = 30, filled = static_cast<int>(width * done_ / std::max<std::size_t>(total_, 1));
+    const int width = 30, filled = static_cast<int>(width * std::min(done_, total_) / std::max<std::size_t>(total_, 1));
     std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(width - filled), ' ') << "] "
               << done_ << "/" << total_ << " " << what.substr(0, 40) << "\033[K" << std::flush;
     shown_ = true;
@@ -279,10 +279,14 @@ int main(int argc, char** argv) {
       { const std::string e = fs::path(out).extension().string();
         if (e != ".json" && e != ".csv" && e != ".geojson") throw InputError(out, "--out", "unknown output format '" + e + "' (expected .json, .csv or .geojson)"); }
       planners::Registry::instance().create(planner);  // unknown planner: before any work
-      const planners::PlanningContext ctx = planners::makeContext(makeProblem(map, radius, start, unknownFree, cellSize));
-      Progress progress(1);
-      const experiments::RunResult r = experiments::runOnce(ctx, planner, kv, timeLimit);
-      progress.step(planner);
+      Progress progress(6);
+      progress.step("reading the map");
+      Problem problem = makeProblem(map, radius, start, unknownFree, cellSize);
+      progress.step("classifying cells");
+      const planners::PlanningContext ctx = planners::makeContext(std::move(problem));
+      const experiments::RunResult r =
+          experiments::runOnce(ctx, planner, kv, timeLimit, [&](const std::string& what) { progress.step(what); });
+      progress.step("writing");
       datasets::writePathFile(out, makeDocument(ctx, r));
       if (!picture.empty()) {
         experiments::PictureContent pc{&ctx.problem.workspace, &ctx.cells, &r.plan.treeEdges, &r.plan.paths, ctx.problem.robots[0].radius.get_d(),

@@ -8,13 +8,19 @@
 namespace coverkit::experiments {
 
 RunResult runOnce(const planners::PlanningContext& ctx, const std::string& planner, const std::map<std::string, std::string>& params,
-                  double timeLimit) {
+                  double timeLimit, const std::function<void(const std::string&)>& onPhase) {
+  auto phase = [&](const char* name) {
+    if (onPhase) onPhase(name);
+  };
   RunResult r;
+  phase("planning");
   const auto t0 = std::chrono::steady_clock::now();
   r.plan = planners::runPlanner(planner, ctx, params, timeLimit);
   r.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() + ctx.cellSeconds;
   if (succeeded(r.plan.status)) {
+    phase("validating");
     r.validation = validatePaths(ctx.problem, r.plan.paths);
+    phase("metrics");
     r.metrics = computeMetrics(ctx.problem, ctx.cells, r.plan.paths);
   } else {
     r.validation.valid = false;

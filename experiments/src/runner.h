@@ -4,6 +4,7 @@
 #include <coverkit/geometry/validate.h>
 #include <coverkit/planners/planner.h>
 
+#include <functional>
 #include <map>
 #include <string>
 
@@ -16,8 +17,10 @@ struct RunResult {
   double totalSeconds = 0;
 };
 
+/// `onPhase`, when set, is called as each phase starts ("planning", "validating", "metrics").
 RunResult runOnce(const planners::PlanningContext& context, const std::string& planner,
-                  const std::map<std::string, std::string>& params, double timeLimit = 0);
+                  const std::map<std::string, std::string>& params, double timeLimit = 0,
+                  const std::function<void(const std::string&)>& onPhase = {});
 
 /// Parses "X,Y" exactly.
 Point parsePoint(const std::string& text, const std::string& option);

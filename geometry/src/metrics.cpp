@@ -6,6 +6,8 @@
 #include "edge_index.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 #include <unordered_map>
 
@@ -97,14 +99,16 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
 
   m.freeArea = freeArea(problem.workspace).get_d();
   double area = 0;
-  // A path the validator accepts sweeps only closure(F): the exact area can skip clipping to F.
+  // A path the validator accepts sweeps only closure(F): the exact area can skip clipping to F,
+  // which is what costs most, so longer paths stay exact.
+  const std::size_t limit = std::max(o.exactAreaMaxSegments, o.exactAreaMaxSegmentsClear);
   bool clear = false;
-  if (pieces <= o.exactAreaMaxSegments && paths.size() == problem.robots.size()) {
+  if (pieces <= limit && paths.size() == problem.robots.size()) {
     Problem unanchored = problem;  // clearance and continuity only: the start is not a metric's concern
     for (Robot& rb : unanchored.robots) rb.start.reset();
     clear = validatePaths(unanchored, paths).valid;
   }
-  if (pieces <= o.exactAreaMaxSegments &&
+  if (pieces <= (clear ? limit : o.exactAreaMaxSegments) &&
       exactCoveredArea(problem.workspace, problem.robots.at(0).radius, paths, area, clear)) {
     m.areaMethod = "exact";
     m.areaCoverageError = 0;
@@ -122,63 +126,140 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   return m;
 }
 
+namespace {
+
+/// Bucket grid over the path's straight pieces (arcs flattened), for distance queries.
+class PieceGrid {
+public:
+  PieceGrid(const std::vector<Path>& paths, double flatten, double cell, double x0, double y0, double x1, double y1)
+      : x0_(x0), y0_(y0), cell_(cell) {
+    nx_ = std::max(1, static_cast<int>(std::ceil((x1 - x0) / cell)) + 1);
+    ny_ = std::max(1, static_cast<int>(std::ceil((y1 - y0) / cell)) + 1);
+    buckets_.assign(static_cast<std::size_t>(nx_) * ny_, {});
+    for (const Path& p : paths) {
+      const std::vector<PointD> pts = p.polyline(flatten);
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        const PointD a = pts[i], b = i + 1 < pts.size() ? pts[i + 1] : pts[i];
+        if (i + 1 == pts.size() && pts.size() > 1) break;
+        const std::size_t k = pieces_.size();
+        pieces_.push_back({a.x, a.y, b.x, b.y});
+        for (int j = by(std::min(a.y, b.y)); j <= by(std::max(a.y, b.y)); ++j)
+          for (int q = bx(std::min(a.x, b.x)); q <= bx(std::max(a.x, b.x)); ++q) buckets_[static_cast<std::size_t>(j) * nx_ + q].push_back(k);
+      }
+    }
+  }
+  /// Distance from (x, y) to the path, or a value above `limit` when it is farther than `limit`.
+  double distance(double x, double y, double limit) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (int j = by(y - limit); j <= by(y + limit); ++j)
+      for (int q = bx(x - limit); q <= bx(x + limit); ++q)
+        for (std::size_t k : buckets_[static_cast<std::size_t>(j) * nx_ + q]) {
+          const auto& s = pieces_[k];
+          best = std::min(best, detail::pointSegDist(x, y, s[0], s[1], s[2], s[3]));
+        }
+    return best;
+  }
+
+private:
+  int bx(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0_) / cell_)), 0, nx_ - 1); }
+  int by(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0_) / cell_)), 0, ny_ - 1); }
+  double x0_, y0_, cell_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::array<double, 4>> pieces_;
+  std::vector<std::vector<std::size_t>> buckets_;
+};
+
+struct Square {
+  double cx, cy;
+  signed char inside;  // 1 / 0 when known for the whole square's parent, -1 unknown
+};
+
+}  // namespace
+
 double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::vector<Path>& paths,
                          std::size_t maxPixels, double& errorBound) {
+  // Squares are classified by their centre's distance d to the path and to W's boundary: a square
+  // of half-diagonal e whose centre is farther than e from the boundary lies on one side of it, and
+  // it is wholly covered when d <= r - e, wholly uncovered when d > r + e. Uncertain squares are
+  // split in four, level by level, while the work stays within a budget; the ones left uncertain
+  // count their centre's status and add their whole area to the error bound.
+  errorBound = 0;
   const Box b = w.bbox();
   const double r = radius.get_d();
-  const double x0 = b.xmin.get_d(), y0 = b.ymin.get_d();
-  const double wd = b.xmax.get_d() - x0, ht = b.ymax.get_d() - y0;
-  double h = std::max(r / 8, std::sqrt(wd * ht / static_cast<double>(maxPixels)));
-  const int nx = std::max(1, static_cast<int>(std::ceil(wd / h))), ny = std::max(1, static_cast<int>(std::ceil(ht / h)));
-  const double half = h * std::sqrt(0.5);
-  const double flatten = h / 100;  // arcs flattened to within this
-  std::vector<float> dist(static_cast<std::size_t>(nx) * ny, std::numeric_limits<float>::infinity());
-  std::vector<std::uint8_t> nearBoundary(dist.size(), 0);
-  auto pix = [&](double x, double lo) { return static_cast<int>(std::floor((x - lo) / h - 0.5)); };
-  auto visitBand = [&](double ax, double ay, double bx, double by, double band, auto&& f) {
-    const int i0 = std::max(0, pix(std::min(ax, bx) - band, x0)), i1 = std::min(nx - 1, pix(std::max(ax, bx) + band, x0) + 1);
-    const int j0 = std::max(0, pix(std::min(ay, by) - band, y0)), j1 = std::min(ny - 1, pix(std::max(ay, by) + band, y0) + 1);
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        const double cx = x0 + (i + 0.5) * h, cy = y0 + (j + 0.5) * h;
-        f(static_cast<std::size_t>(j) * nx + i, detail::pointSegDist(cx, cy, ax, ay, bx, by));
-      }
+  const double x0 = b.xmin.get_d(), y0 = b.ymin.get_d(), x1 = b.xmax.get_d(), y1 = b.ymax.get_d();
+  const double wd = x1 - x0, ht = y1 - y0;
+  const std::size_t topPixels = std::max<std::size_t>(1, maxPixels / 4);
+  const double h0 = std::max(r / 4, std::sqrt(wd * ht / static_cast<double>(topPixels)));
+  const int nx = std::max(1, static_cast<int>(std::ceil(wd / h0))), ny = std::max(1, static_cast<int>(std::ceil(ht / h0)));
+  const int maxLevels = 8;
+  const double flatten = h0 / std::pow(2.0, maxLevels) / 16;  // arc flattening, added to every margin
+  const double slack = flatten + 1e-9 * std::max({1.0, std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+  const PieceGrid pieces(paths, flatten, std::max(r, h0), x0 - r, y0 - r, x1 + r, y1 + r);
+  detail::EdgeIndex edges(w);
+  auto nearBoundary = [&](double x, double y, double e) {
+    bool near = false;
+    edges.query(x - e, y - e, x + e, y + e, [&](const detail::IndexedEdge& s) {
+      near = near || detail::pointSegDist(x, y, s.ax, s.ay, s.bx, s.by) <= e;
+    });
+    return near;
   };
-  for (const Path& p : paths) {
-    const std::vector<PointD> pts = p.polyline(flatten);
-    for (std::size_t i = 0; i + 1 < pts.size() || i == 0; ++i) {
-      const PointD a = pts[i], c = i + 1 < pts.size() ? pts[i + 1] : pts[i];
-      visitBand(a.x, a.y, c.x, c.y, r + h, [&](std::size_t k, double d) { dist[k] = std::min(dist[k], static_cast<float>(d)); });
-      if (pts.size() == 1) break;
+  auto insideW = [&](double x, double y) {  // ray to the right, half-open rule
+    bool in = false;
+    edges.query(x, y, x1 + 1, y, [&](const detail::IndexedEdge& s) {
+      if ((s.ay > y) != (s.by > y) && s.ax + (y - s.ay) * (s.bx - s.ax) / (s.by - s.ay) > x) in = !in;
+    });
+    return in;
+  };
+  // level 0: pixel centres inside W by row parity
+  std::vector<Square> level;
+  {
+    std::vector<double> xs;
+    for (int j = 0; j < ny; ++j) {
+      const double cy = y0 + (j + 0.5) * h0;
+      xs.clear();
+      for (const auto& e : edges.edges())
+        if ((e.ay > cy) != (e.by > cy)) xs.push_back(e.ax + (cy - e.ay) * (e.bx - e.ax) / (e.by - e.ay));
+      std::sort(xs.begin(), xs.end());
+      std::size_t q = 0;
+      for (int i = 0; i < nx; ++i) {
+        const double cx = x0 + (i + 0.5) * h0;
+        while (q < xs.size() && xs[q] < cx) ++q;
+        level.push_back({cx, cy, static_cast<signed char>(q % 2)});
+      }
     }
   }
-  detail::EdgeIndex index(w);
-  for (const auto& e : index.edges())
-    visitBand(e.ax, e.ay, e.bx, e.by, half, [&](std::size_t k, double d) { if (d <= half * 1.000001) nearBoundary[k] = 1; });
-  // inside W by row parity at pixel centres (pixels near the boundary are uncertain anyway)
-  std::size_t covered = 0, uncertain = 0;
-  std::vector<double> xs;
-  const auto& edges = index.edges();
-  for (int j = 0; j < ny; ++j) {
-    const double cy = y0 + (j + 0.5) * h;
-    xs.clear();
-    for (const auto& e : edges)
-      if ((e.ay > cy) != (e.by > cy)) xs.push_back(e.ax + (cy - e.ay) * (e.bx - e.ax) / (e.by - e.ay));
-    std::sort(xs.begin(), xs.end());
-    std::size_t q = 0;
-    for (int i = 0; i < nx; ++i) {
-      const double cx = x0 + (i + 0.5) * h;
-      while (q < xs.size() && xs[q] < cx) ++q;
-      const bool inside = q % 2 == 1;
-      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
-      const double d = dist[k];
-      const bool sure = !nearBoundary[k] && std::abs(d - r) > half + flatten + 1e-9 * r;
-      if (inside && d <= r) ++covered;
-      if (!sure && (inside || nearBoundary[k]) && d <= r + half + flatten) ++uncertain;
+  double covered = 0, side = h0;
+  std::size_t budget = 4 * maxPixels;
+  std::vector<Square> next;
+  for (int lev = 0;; ++lev) {
+    const double e = side * std::sqrt(0.5), area = side * side;
+    next.clear();
+    const bool last = lev == maxLevels || 4 * level.size() > budget;
+    for (const Square& s : level) {
+      // below level 0 a known side means the parent square did not meet the boundary
+      const bool knownSide = lev > 0 && s.inside >= 0;
+      const bool nearB = !knownSide && nearBoundary(s.cx, s.cy, e + slack);
+      const bool inside = (lev == 0 || knownSide) ? s.inside == 1 : insideW(s.cx, s.cy);
+      if (!nearB && !inside) continue;
+      const double d = pieces.distance(s.cx, s.cy, r + e + slack);
+      if (d > r + e + slack) continue;                            // wholly uncovered
+      if (!nearB && d <= r - e - slack) { covered += area; continue; }  // wholly covered
+      if (last) {
+        if (inside && d <= r) covered += area;
+        errorBound += area;
+        continue;
+      }
+      const double q = side / 4;
+      const signed char known = nearB ? -1 : static_cast<signed char>(inside);
+      for (double dx : {-q, q})
+        for (double dy : {-q, q}) next.push_back({s.cx + dx, s.cy + dy, known});
     }
+    if (last) break;
+    budget -= std::min(budget, next.size());
+    level.swap(next);
+    side /= 2;
   }
-  errorBound = uncertain * h * h;
-  return covered * h * h;
+  return covered;
 }
 
 }  // namespace coverkit

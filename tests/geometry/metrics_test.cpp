@@ -54,6 +54,24 @@ TEST(Metrics, RasterAgreesWithExactWithinItsBound) {
   }
 }
 
+TEST(Metrics, RasterBoundStaysSmallBetweenTouchingPasses) {
+  // passes exactly 2r apart: every point between them is covered, the midlines are where the
+  // disc boundaries touch; refinement keeps the uncertain band thin
+  const Problem p = room(20, 8, Rational(1, 2));
+  std::vector<PointD> pts;
+  for (int k = 0; k < 8; ++k) {
+    pts.push_back({0.5, 0.5 + k});
+    pts.push_back({19.5, 0.5 + k});
+    if (k % 2 == 1) std::swap(pts[pts.size() - 1], pts[pts.size() - 2]);
+  }
+  const Path path = Path::fromPoints(pts);
+  double exact = 0, err = 0;
+  ASSERT_TRUE(exactCoveredArea(p.workspace, Rational(1, 2), {path}, exact));
+  const double raster = rasterCoveredArea(p.workspace, Rational(1, 2), {path}, 200'000, err);
+  EXPECT_LE(std::abs(raster - exact), err);
+  EXPECT_LT(err / 160, 0.01);
+}
+
 TEST(Metrics, LengthTurnsAndSubcells) {
   Problem p = room(4, 4, Rational(1, 2));
   const CellGrid cells = classifyCells(p.workspace, Rational(1));

@@ -11,7 +11,8 @@ namespace coverkit {
 struct MetricOptions {
   double speed = 0.2;                  ///< m/s, for time_s
   double turnToleranceDeg = 1.0;       ///< heading changes above this count as turns
-  std::size_t exactAreaMaxSegments = 3000;   ///< above this, area coverage is rasterised
+  std::size_t exactAreaMaxSegments = 3000;        ///< above this, area coverage is rasterised...
+  std::size_t exactAreaMaxSegmentsClear = 20000;  ///< ...unless the path is clear (no clip to F needed)
   std::size_t rasterMaxPixels = 4'000'000;
 };
 
