@@ -10,6 +10,6 @@ function(coverkit_library name)
   add_library(coverkit::${name} ALIAS coverkit_${name})
   target_include_directories(coverkit_${name} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
-  set_target_properties(coverkit_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  set_target_properties(coverkit_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
   coverkit_warnings(coverkit_${name})
 endfunction()

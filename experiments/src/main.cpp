@@ -124,8 +124,8 @@ std::string hostName() {
   return buf;
 }
 
-int cmdDemo(const std::string& outDir, bool quiet) {
-  const fs::path data = COVERKIT_DATA_DIR;
+int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
+  const fs::path data = dataDir;
   std::ifstream list(data / "scenarios.txt");
   if (!list) throw InputError((data / "scenarios.txt").string(), "", "built-in scenario list not found");
   struct Scenario {
@@ -245,6 +245,8 @@ int main(int argc, char** argv) {
   std::string demoOut = "coverkit-demo";
   auto* demo = app.add_subcommand("demo", "plan every built-in scenario with every planner, validate, write a report");
   demo->add_option("--out", demoOut, "output folder (default: coverkit-demo)");
+  std::string dataDir = COVERKIT_DATA_DIR;
+  demo->add_option("--data", dataDir, "folder with scenarios.txt and the maps it names (default: the built-in data)");
   demo->add_flag("--quiet", quiet, "no summary line");
 
   try {
@@ -272,7 +274,7 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (*demo) return cmdDemo(demoOut, quiet);
+    if (*demo) return cmdDemo(demoOut, dataDir, quiet);
     if (*plan) {
       const auto kv = parseParams(params);
       if (!picture.empty()) experiments::checkPictureName(picture);
