@@ -165,7 +165,11 @@ Workspace readRosMap(const std::string& yamlPath, const MapOptions& options) {
     if (o.size() > 2 && yamlNumber(o[2], yamlPath, "origin[2]") != 0)
       throw InputError(yamlPath, "origin[2]", "a rotated map (yaw != 0) is not supported");
   }
-  const bool negate = y["negate"] ? yamlNumber(y["negate"], yamlPath, "negate") != 0 : false;
+  bool negate = false;
+  if (y["negate"]) {
+    const std::string v = y["negate"].IsScalar() ? y["negate"].Scalar() : "";
+    negate = v == "true" || v == "True" ? true : v == "false" || v == "False" ? false : yamlNumber(y["negate"], yamlPath, "negate") != 0;
+  }
   const Rational occ = y["occupied_thresh"] ? yamlNumber(y["occupied_thresh"], yamlPath, "occupied_thresh") : ratio(65, 100);
   const Rational fre = y["free_thresh"] ? yamlNumber(y["free_thresh"], yamlPath, "free_thresh") : ratio(196, 1000);
   if (occ < 0 || occ > 1 || fre < 0 || fre > 1 || fre > occ) throw InputError(yamlPath, "free_thresh/occupied_thresh", "must satisfy 0 <= free_thresh <= occupied_thresh <= 1");
@@ -273,6 +277,11 @@ public:
     Workspace w;
     w.name = name_;
     const std::string kw = word();
+    const std::size_t save = p_;
+    const std::string dims = word();  // optional Z, M or ZM
+    if (dims == "EMPTY") fail("empty geometry: no free space");
+    if (!dims.empty() && dims != "Z" && dims != "M" && dims != "ZM") fail("unexpected '" + dims + "'");
+    if (dims.empty()) p_ = save;
     if (kw == "POLYGON") {
       w.regions.push_back(polygon());
     } else if (kw == "MULTIPOLYGON") {
@@ -329,7 +338,10 @@ private:
     do {
       Rational x = number(), y = number();
       skip();
-      if (p_ < t_.size() && t_[p_] != ',' && t_[p_] != ')') number();  // ignore Z
+      skip();
+      if (p_ < t_.size() && t_[p_] != ',' && t_[p_] != ')') number();  // ignore Z (or M)
+      skip();
+      if (p_ < t_.size() && t_[p_] != ',' && t_[p_] != ')') number();  // ignore M of ZM
       r.push_back({x, y});
     } while (accept(','));
     expect(')');

@@ -11,6 +11,7 @@
 //  - A start that is not a sub-cell centre is joined to its sub-cell's centre by a straight move,
 //    checked exactly; if that move is not clear the plan's status is invalid_start.
 //  - The tour returns to the start sub-cell and then to the start point.
+#include <coverkit/geometry/error.h>
 #include <coverkit/geometry/validate.h>
 #include <coverkit/planners/stc_skeleton.h>
 
@@ -80,6 +81,10 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
   plan.planner = name();
   const CellGrid& cells = ctx.cells;
   const Robot& robot = ctx.problem.robots.at(0);
+  if (cells.subSize() < 2 * robot.radius)
+    throw InputError("--cell-size", formatDouble(cells.subSizeD()),
+                     "must be at least 2r = " + formatDouble(Rational(2 * robot.radius).get_d()) + " for " + name() +
+                         " (the disc must fit in its sub-cell)");
   Path path;
   if (!robot.start) {
     plan.status = PlanStatus::kNoFreeSpace;

@@ -62,6 +62,7 @@ expect_bad "start in obstacle" "inside an obstacle" $(plan) "$T/room.wkt" --star
 expect_bad "unknown planner" "--planner: nope: unknown planner (known: " plan --planner nope --radius 0.25 --out "$T/out.json" --map "$T/room.wkt"
 expect_bad "unknown parameter" "--param: depth: unknown parameter" $(plan) "$T/room.wkt" --param depth=3
 expect_bad "parameter out of range" "--param: tree=random: must be one of" $(plan) "$T/room.wkt" --param tree=random
+expect_bad "cell size below 2r" "--cell-size: 0.4: must be at least 2r" $(plan) "$T/room.wkt" --cell-size 0.4
 expect_bad "unknown output format" "unknown output format '.txt'" plan --planner stc --radius 0.25 --out "$T/out.txt" --map "$T/room.wkt"
 expect_bad "unknown picture format" "unknown picture format" plan --planner stc --radius 0.25 --out "$T/out.json" --picture "$T/out.bmp" --map "$T/room.wkt"
 expect_bad "missing path file" "file not found" evaluate --map "$T/room.wkt" --path "$T/none.json"
