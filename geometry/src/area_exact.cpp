@@ -12,6 +12,8 @@
 #include <CGAL/General_polygon_set_2.h>
 #include <CGAL/Gps_circle_segment_traits_2.h>
 
+#include "circle_segment_area.h"
+
 #include <cmath>
 #include <list>
 
@@ -91,31 +93,6 @@ Polygon ringPolygon(const Ring& ring, bool wantCcw) {
   return pg;
 }
 
-double curveArea2(const XCurve& c) {
-  const double sx = CGAL::to_double(c.source().x()), sy = CGAL::to_double(c.source().y());
-  const double tx = CGAL::to_double(c.target().x()), ty = CGAL::to_double(c.target().y());
-  double a = sx * ty - tx * sy;  // chord (shoelace, doubled)
-  if (c.is_circular()) {
-    const auto circ = c.supporting_circle();
-    const double cx = CGAL::to_double(circ.center().x()), cy = CGAL::to_double(circ.center().y());
-    const double r2 = CGAL::to_double(circ.squared_radius());
-    const double ux = sx - cx, uy = sy - cy, vx = tx - cx, vy = ty - cy;
-    const bool ccw = c.orientation() == CGAL::COUNTERCLOCKWISE;
-    double theta = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);  // (-π, π]
-    if (!ccw) theta = -theta;
-    if (theta < 0) theta += 2 * M_PI;
-    const double seg = r2 * (theta - std::sin(theta));  // doubled circular-segment area
-    a += ccw ? seg : -seg;
-  }
-  return a;
-}
-
-double polygonArea(const Polygon& pg) {
-  double a = 0;
-  for (auto it = pg.curves_begin(); it != pg.curves_end(); ++it) a += curveArea2(*it);
-  return a / 2;
-}
-
 }  // namespace
 
 bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths, double& area, bool pathIsClear) {
@@ -152,8 +129,8 @@ bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<P
   swept.polygons_with_holes(std::back_inserter(out));
   area = 0;
   for (const PolygonWithHoles& pwh : out) {
-    area += polygonArea(pwh.outer_boundary());
-    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) area += polygonArea(*h);  // holes are clockwise
+    area += detail::polygonArea(pwh.outer_boundary());
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) area += detail::polygonArea(*h);  // holes are clockwise
   }
   return true;
 }

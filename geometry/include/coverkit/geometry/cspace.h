@@ -1,0 +1,58 @@
+#pragma once
+// The configuration space of a disc robot of radius r (issue: exact C-space).
+//
+// C-obstacle = obstacle ⊕ disc(r); the workspace boundary is eroded by r. C-free is the set of
+// centres at which the disc lies in W and meets no obstacle interior. It is built with CGAL's
+// `approximated_offset_2` (circle-segment traits, exact kernel): every arc of the result is exact
+// (rational centre, rational squared radius); where the exact offset would need an irrational line,
+// the construction replaces it by rational pieces that lie *outside* the exact offset, within eps.
+// So the C-obstacles used here contain the exact ones (an approximation errs outward, never inward)
+// and the C-free used here is contained in the exact C-free: whatever it calls free is free.
+// eps defaults to 1e-6 × the workspace's extent (docs/architecture.md has the measured choice).
+//
+// Decision: two obstacles exactly 2r apart leave no passage. In exact arithmetic the gap is a single
+// point of C-free; the conservative approximation closes it, and a path through it would have zero
+// margin anyway.
+#include <coverkit/geometry/path.h>
+
+#include <memory>
+#include <vector>
+
+namespace coverkit {
+
+/// A closed boundary of line segments and circular arcs, in doubles (for output and pictures).
+struct CurveLoop {
+  std::vector<PathSegment> pieces;
+};
+
+/// One connected component of C-free (or one C-obstacle): outer boundary and holes.
+struct CurveRegion {
+  CurveLoop outer;
+  std::vector<CurveLoop> holes;
+  double area = 0;
+};
+
+class CSpace {
+public:
+  /// Throws InputError when r <= 0. `relativeEps` scales with the workspace's extent.
+  CSpace(const Workspace& w, const Rational& radius, double relativeEps = 1e-6);
+  ~CSpace();
+  CSpace(CSpace&&) noexcept;
+  CSpace& operator=(CSpace&&) noexcept;
+
+  const Rational& radius() const;
+  double epsilon() const;                       ///< the absolute approximation bound used
+  std::size_t componentCount() const;
+  /// Index of the component whose closure contains p (exact), or -1 when p is not in C-free.
+  int componentOf(const Point& p) const;
+  bool contains(const Point& p) const { return componentOf(p) >= 0; }
+  double area() const;                          ///< area of C-free
+  std::vector<CurveRegion> components() const;  ///< the components of C-free, largest first
+  std::vector<CurveRegion> obstacles() const;   ///< the C-obstacles (united), for pictures
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace coverkit

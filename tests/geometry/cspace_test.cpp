@@ -1,0 +1,144 @@
+#include <coverkit/datasets/generators.h>
+#include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/cspace.h>
+#include <coverkit/geometry/error.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace coverkit;
+
+namespace {
+Workspace boxWith(const std::vector<Ring>& holes, int w = 10, int h = 10) {
+  Workspace ws;
+  Region r;
+  r.outer = {{0, 0}, {w, 0}, {w, h}, {0, h}};
+  r.holes = holes;
+  ws.regions.push_back(r);
+  normalise(ws);
+  return ws;
+}
+}  // namespace
+
+TEST(CSpace, ConvexObstacleAreaIsAPlusPerimeterRPlusPiR2) {
+  // a triangle with irrational edge normals, far from the walls; eps tiny so the bound holds at 1e-12
+  const Ring tri = {{3, 3}, {6, 4}, {4, 7}};
+  const Rational r(1, 2);
+  const CSpace cs(boxWith({tri}), r, 1e-15);
+  const double A = 0.5 * std::abs((6 - 3) * (7 - 3) - (4 - 3) * (4 - 3));
+  const double P = std::hypot(3, 1) + std::hypot(2, 3) + std::hypot(1, 4);
+  const double expected = (10 - 1.0) * (10 - 1.0) - (A + P * 0.5 + M_PI * 0.25);
+  EXPECT_NEAR(cs.area(), expected, 1e-12 * expected);
+  EXPECT_LE(cs.area(), expected);  // conservative: never more C-free than the exact one
+  EXPECT_EQ(cs.componentCount(), 1u);
+}
+
+TEST(CSpace, SquareGivesARoundedSquare) {
+  const Rational r(1, 4);
+  const CSpace cs(boxWith({{{4, 4}, {6, 4}, {6, 6}, {4, 6}}}), r, 1e-15);
+  const double expected = 9.5 * 9.5 - (4 + 8 * 0.25 + M_PI / 16);
+  EXPECT_NEAR(cs.area(), expected, 1e-12 * expected);
+  // the C-obstacle of the square: straight sides and four quarter circles about the corners
+  std::size_t arcs = 0, lines = 0;
+  for (const CurveRegion& o : cs.obstacles())
+    if (std::abs(o.area - (4 + 2 + M_PI / 16)) < 1e-9)
+      for (const PathSegment& s : o.outer.pieces) (s.kind == PathSegment::Kind::kArc ? arcs : lines) += 1;
+  EXPECT_EQ(lines, 4u);
+  EXPECT_GE(arcs, 4u);  // each quarter circle may be split at its x-extreme points
+}
+
+TEST(CSpace, GapsNarrowerThanTheDiscCloseAndTwoRExactlyIsClosed) {
+  // two 4×4 rooms joined by a neck of width g
+  auto rooms = [](const Rational& g) {
+    Workspace w;
+    Region reg;
+    const Rational lo = 2 - g / 2, hi = 2 + g / 2;
+    reg.outer = {{0, 0}, {4, 0}, {4, lo}, {6, lo}, {6, 0}, {10, 0}, {10, 4}, {6, 4}, {6, hi}, {4, hi}, {4, 4}, {0, 4}};
+    w.regions.push_back(reg);
+    normalise(w);
+    return w;
+  };
+  const Rational r(1, 2);
+  EXPECT_EQ(CSpace(rooms(Rational(101, 100)), r).componentCount(), 1u);
+  EXPECT_EQ(CSpace(rooms(Rational(99, 100)), r).componentCount(), 2u);
+  EXPECT_EQ(CSpace(rooms(Rational(1)), r).componentCount(), 2u);  // g = 2r: closed, by decision
+}
+
+TEST(CSpace, ObstaclesMergeWhenTheGapIsBelowTwoR) {
+  auto two = [](const Rational& g) {
+    const Rational x = 4 + g;
+    return boxWith({{{2, 4}, {4, 4}, {4, 6}, {2, 6}}, {{x, 4}, {Rational(x + 2), 4}, {Rational(x + 2), 6}, {x, 6}}}, 12, 10);
+  };
+  const Rational r(1, 2);
+  // the obstacles' union: the band outside the eroded box, plus one or two C-obstacles
+  EXPECT_EQ(CSpace(two(Rational(9, 10)), r).obstacles().size(), 2u);
+  EXPECT_EQ(CSpace(two(Rational(11, 10)), r).obstacles().size(), 3u);
+}
+
+TEST(CSpace, CoarseApproximationLiesInsideTheFineOne) {
+  datasets::PolygonWorldSpec s;
+  s.count = 10;
+  s.shape = datasets::ObstacleShape::kStar;
+  s.seed = 5;
+  const Workspace w = datasets::generatePolygonWorld(s);
+  const Rational r(3, 10);
+  const CSpace coarse(w, r, 1e-3), fine(w, r, 1e-9);
+  EXPECT_LE(coarse.area(), fine.area());
+  EXPECT_NEAR(coarse.area(), fine.area(), 1e-3 * 20 * 200);  // eps × total boundary length, generously
+  std::mt19937_64 rng(9);
+  for (int i = 0; i < 400; ++i) {
+    const Point p{ratio(static_cast<long>(rng() % 2000), 100), ratio(static_cast<long>(rng() % 2000), 100)};
+    if (coarse.contains(p)) EXPECT_TRUE(fine.contains(p));
+  }
+}
+
+TEST(CSpace, RandomPointsFarFromBoundariesMatchTheDistanceTest) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    datasets::PolygonWorldSpec s;
+    s.count = 12;
+    s.shape = static_cast<datasets::ObstacleShape>(seed % 4);
+    s.seed = seed;
+    const Workspace w = datasets::generatePolygonWorld(s);
+    const double r = 0.4;
+    const CSpace cs(w, ratio(2, 5), 1e-6);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int i = 0; i < 600; ++i) {
+      const double x = static_cast<double>(rng() % 20000) / 1000, y = static_cast<double>(rng() % 20000) / 1000;
+      double d = 1e300;
+      bool inside = false;
+      for (const Ring* ring : w.rings())
+        for (std::size_t k = 0; k < ring->size(); ++k) {
+          const double ax = (*ring)[k].x.get_d(), ay = (*ring)[k].y.get_d();
+          const double bx = (*ring)[(k + 1) % ring->size()].x.get_d(), by = (*ring)[(k + 1) % ring->size()].y.get_d();
+          const double dx = bx - ax, dy = by - ay, t = std::clamp(((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+          d = std::min(d, std::hypot(x - ax - t * dx, y - ay - t * dy));
+          if ((ay > y) != (by > y) && ax + (y - ay) * dx / dy > x) inside = !inside;
+        }
+      if (std::abs(d - r) < 1e-3) continue;  // near the C-space boundary: no claim
+      ++checked;
+      EXPECT_EQ(cs.contains({exactFromDouble(x), exactFromDouble(y)}), inside && d > r) << x << "," << y << " d=" << d;
+    }
+    EXPECT_GT(checked, 500);
+  }
+}
+
+TEST(CSpace, GridMapAndTheSamePolygonsGiveTheSameCFree) {
+  const Workspace g = datasets::parseTextGrid("resolution 0.5\n........\n..##....\n..##....\n........\n", "t.grid");
+  const Workspace p = datasets::parseWkt("POLYGON((0 0, 4 0, 4 2, 0 2, 0 0),(1 0.5, 2 0.5, 2 1.5, 1 1.5, 1 0.5))", "t.wkt");
+  const CSpace a(g, ratio(1, 5)), b(p, ratio(1, 5));
+  EXPECT_NEAR(a.area(), b.area(), 1e-12);
+  EXPECT_EQ(a.componentCount(), b.componentCount());
+}
+
+TEST(CSpace, ComponentOfAPointAndBadRadius) {
+  const CSpace cs(boxWith({{{4, 0.5}, {6, 0.5}, {6, 9.5}, {4, 9.5}}}), ratio(1, 2));
+  EXPECT_EQ(cs.componentCount(), 2u);  // the gaps of 0.5 above and below the wall are below 2r = 1
+  EXPECT_NE(cs.componentOf({Rational(2), Rational(5)}), cs.componentOf({Rational(8), Rational(5)}));
+  EXPECT_THROW(CSpace(boxWith({}), Rational(0)), InputError);
+  EXPECT_EQ(cs.componentOf({Rational(5), Rational(5)}), -1);  // inside the obstacle
+  EXPECT_EQ(cs.componentOf({Rational(1, 4), Rational(5)}), -1);  // closer than r to the wall
+  EXPECT_GE(cs.componentOf({Rational(2), Rational(5)}), 0);
+}
