@@ -17,6 +17,21 @@ using nlohmann::json;
 
 namespace {
 json pt(PointD p) { return json::array({p.x, p.y}); }
+json segmentJson(const PathSegment& s) {
+  if (s.kind == PathSegment::Kind::kLine) return {{"type", "line"}, {"from", pt(s.from)}, {"to", pt(s.to)}};
+  return {{"type", "arc"}, {"from", pt(s.from)}, {"to", pt(s.to)}, {"center", pt(s.center)}, {"ccw", s.ccw}};
+}
+/// A closed loop as a GeoJSON ring: arcs sampled to the stated tolerance, first point repeated.
+json ringJson(const CurveLoop& loop) {
+  Path p;
+  if (loop.pieces.empty()) return json::array();
+  p.start = loop.pieces.front().from;
+  p.segments = loop.pieces;
+  json ring = json::array();
+  for (PointD q : p.polyline(kArcSampleTolerance)) ring.push_back(pt(q));
+  if (ring.size() > 1 && ring.front() != ring.back()) ring.push_back(ring.front());
+  return ring;
+}
 std::string ext(const std::string& f) {
   std::string e = fs::path(f).extension().string();
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -78,10 +93,7 @@ std::string pathJson(const PathDocument& doc) {
   json robots = json::array();
   for (const Path& p : doc.paths) {
     json segs = json::array();
-    for (const PathSegment& s : p.segments) {
-      if (s.kind == PathSegment::Kind::kLine) segs.push_back({{"type", "line"}, {"from", pt(s.from)}, {"to", pt(s.to)}});
-      else segs.push_back({{"type", "arc"}, {"from", pt(s.from)}, {"to", pt(s.to)}, {"center", pt(s.center)}, {"ccw", s.ccw}});
-    }
+    for (const PathSegment& s : p.segments) segs.push_back(segmentJson(s));
     robots.push_back({{"start", pt(p.start)}, {"segments", segs}});
   }
   j["robots"] = robots;
@@ -119,6 +131,55 @@ void writePathFile(const std::string& file, const PathDocument& doc) {
     writeFileAtomically(file, fc.dump(1) + "\n");
   } else {
     throw InputError(file, "--out", "unknown output format '" + e + "' (expected .json, .csv or .geojson)");
+  }
+}
+
+void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) {
+  const std::string e = ext(file);
+  auto regions = [](const std::vector<CurveRegion>& rs) {
+    json out = json::array();
+    for (const CurveRegion& r : rs) {
+      json outer = json::array(), holes = json::array();
+      for (const PathSegment& s : r.outer.pieces) outer.push_back(segmentJson(s));
+      for (const CurveLoop& h : r.holes) {
+        json hole = json::array();
+        for (const PathSegment& s : h.pieces) hole.push_back(segmentJson(s));
+        holes.push_back(hole);
+      }
+      out.push_back({{"area", r.area}, {"outer", outer}, {"holes", holes}});
+    }
+    return out;
+  };
+  if (e == ".json") {
+    json j{{"format", "coverkit.cspace/1"},
+           {"map", doc.map},
+           {"robot_radius", doc.robotRadius.get_d()},
+           {"robot_radius_exact", doc.robotRadius.get_str()},
+           {"epsilon", doc.epsilon},
+           {"free_area", doc.freeArea},
+           {"cfree_area", doc.cfreeArea},
+           {"start", doc.start ? pt(*doc.start) : json()},
+           {"start_component", doc.startComponent},
+           {"components", regions(doc.components)},
+           {"obstacles", regions(doc.obstacles)}};
+    writeFileAtomically(file, j.dump(1) + "\n");
+  } else if (e == ".geojson") {
+    json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
+    auto add = [&](const std::vector<CurveRegion>& rs, const char* kind) {
+      for (std::size_t i = 0; i < rs.size(); ++i) {
+        json rings = json::array({ringJson(rs[i].outer)});
+        for (const CurveLoop& h : rs[i].holes) rings.push_back(ringJson(h));
+        fc["features"].push_back({{"type", "Feature"},
+                                  {"properties", {{"kind", kind}, {"index", i}, {"area", rs[i].area}, {"arc_tolerance", kArcSampleTolerance},
+                                                  {"start_component", std::string(kind) == "cfree" && static_cast<int>(i) == doc.startComponent}}},
+                                  {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
+      }
+    };
+    add(doc.components, "cfree");
+    add(doc.obstacles, "cobstacle");
+    writeFileAtomically(file, fc.dump(1) + "\n");
+  } else {
+    throw InputError(file, "--out", "unknown output format '" + e + "' (expected .json or .geojson)");
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
@@ -206,7 +207,7 @@ int main(int argc, char** argv) {
 
   std::string map, radius, start, out, picture, planner = "stc", pathFile, cellSize;
   std::vector<std::string> params;
-  bool unknownFree = false, json = false, showCells = false, showTree = false, quiet = false;
+  bool unknownFree = false, json = false, showCells = false, showTree = false, showCspace = false, quiet = false;
   double timeLimit = 0;
 
   auto addMapOptions = [&](CLI::App* c, bool needRadius) {
@@ -240,6 +241,16 @@ int main(int argc, char** argv) {
   render->add_flag("--cells", showCells, "draw the cell classification");
   render->add_flag("--tree", showTree, "draw the planner's spanning tree");
   render->add_option("--out", out, "picture (.png, .svg)")->required();
+
+  auto* cspace = app.add_subcommand("cspace", "compute the C-space of the disc robot: C-obstacles, C-free components, areas");
+  double relEps = 1e-6;
+  addMapOptions(cspace, true);
+  cspace->add_option("--start", start, "a start X,Y: its C-free component is reported");
+  cspace->add_option("--epsilon", relEps, "approximation bound relative to the workspace extent (default 1e-6); C-obstacles err outward only")
+      ->check(CLI::Range(1e-15, 1e-2));
+  cspace->add_option("--out", out, "C-space file (.json with segments and arcs, or .geojson with arcs sampled)")->required();
+  cspace->add_option("--picture", picture, "picture (.png, .svg)");
+  render->add_flag("--cspace", showCspace, "overlay the C-space (C-obstacles and C-free components)");
 
   auto* list = app.add_subcommand("list", "list planners and their parameters");
   std::string demoOut = "coverkit-demo";
@@ -275,6 +286,45 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*demo) return cmdDemo(demoOut, dataDir, quiet);
+    if (*cspace) {
+      { const std::string e = fs::path(out).extension().string();
+        if (e != ".json" && e != ".geojson") throw InputError(out, "--out", "unknown output format '" + e + "' (expected .json or .geojson)"); }
+      if (!picture.empty()) experiments::checkPictureName(picture);
+      Progress progress(3);
+      progress.step("reading the map");
+      const Problem problem = makeProblem(map, radius, start, unknownFree, cellSize);
+      if (problem.robots[0].start && !strictlyInside(problem.workspace, *problem.robots[0].start))
+        throw InputError("--start", start, "start is outside the workspace or inside an obstacle of " + map);
+      progress.step("C-space");
+      const CSpace cs(problem.workspace, problem.robots[0].radius, relEps);
+      datasets::CSpaceDocument doc;
+      doc.map = map;
+      doc.robotRadius = problem.robots[0].radius;
+      doc.epsilon = cs.epsilon();
+      doc.freeArea = freeArea(problem.workspace).get_d();
+      doc.cfreeArea = cs.area();
+      doc.components = cs.components();
+      doc.obstacles = cs.obstacles();
+      if (problem.robots[0].start) {
+        doc.start = PointD{problem.robots[0].start->x.get_d(), problem.robots[0].start->y.get_d()};
+        doc.startComponent = cs.componentOf(*problem.robots[0].start);
+      }
+      progress.step("writing");
+      datasets::writeCSpaceFile(out, doc);
+      if (!picture.empty()) {
+        experiments::PictureContent pc;
+        pc.workspace = &problem.workspace;
+        pc.cfree = &doc.components;
+        pc.cobstacles = &doc.obstacles;
+        pc.title = "C-space of " + fs::path(map).filename().string() + ", r = " + radius;
+        experiments::renderPicture(picture, pc);
+      }
+      std::cout << "C-free: " << doc.components.size() << " component(s), area " << formatDouble(doc.cfreeArea) << " of free area "
+                << formatDouble(doc.freeArea) << " (epsilon " << formatDouble(doc.epsilon) << ")";
+      if (doc.start) std::cout << "; start in component " << doc.startComponent;
+      std::cout << "; wrote " << out << "\n";
+      return 0;
+    }
     if (*plan) {
       const auto kv = parseParams(params);
       if (!picture.empty()) experiments::checkPictureName(picture);
@@ -335,6 +385,15 @@ int main(int argc, char** argv) {
       }
       experiments::PictureContent pc{&ctx.problem.workspace, showCells ? &ctx.cells : nullptr, showTree ? &tree : nullptr, &paths,
                                      ctx.problem.robots[0].radius.get_d(), fs::path(map).filename().string()};
+      std::optional<CSpace> cs;
+      std::vector<CurveRegion> cfree, cobs;
+      if (showCspace) {
+        cs.emplace(ctx.problem.workspace, ctx.problem.robots[0].radius);
+        cfree = cs->components();
+        cobs = cs->obstacles();
+        pc.cfree = &cfree;
+        pc.cobstacles = &cobs;
+      }
       experiments::renderPicture(out, pc);
       return 0;
     }

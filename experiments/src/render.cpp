@@ -55,6 +55,49 @@ void renderPicture(const std::string& file, const PictureContent& c) {
   }
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_fill(cr);
+  // C-space: C-obstacles translucent red, C-free components in light colours, boundaries with arcs
+  auto loopPath = [&](const CurveLoop& loop) {
+    bool first = true;
+    for (const PathSegment& p : loop.pieces) {
+      if (first) cairo_move_to(cr, X(p.from.x), Y(p.from.y));
+      first = false;
+      if (p.kind == PathSegment::Kind::kLine) {
+        cairo_line_to(cr, X(p.to.x), Y(p.to.y));
+        continue;
+      }
+      const double rad = std::hypot(p.from.x - p.center.x, p.from.y - p.center.y);
+      const double a0 = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x), a1 = std::atan2(p.to.y - p.center.y, p.to.x - p.center.x);
+      // the y axis points down on the page: a counter-clockwise arc is drawn clockwise
+      if (p.ccw) cairo_arc_negative(cr, X(p.center.x), Y(p.center.y), rad * scale, -a0, -a1);
+      else cairo_arc(cr, X(p.center.x), Y(p.center.y), rad * scale, -a0, -a1);
+    }
+    cairo_close_path(cr);
+  };
+  auto regionPath = [&](const CurveRegion& r) {
+    loopPath(r.outer);
+    for (const CurveLoop& h : r.holes) loopPath(h);
+  };
+  if (c.cobstacles) {  // clipped to the workspace's box: the band outside it is not informative
+    cairo_save(cr);
+    cairo_rectangle(cr, X(x0), Y(y0 + h), w * scale, h * scale);
+    cairo_clip(cr);
+    for (const CurveRegion& r : *c.cobstacles) regionPath(r);
+    cairo_set_source_rgba(cr, 0.85, 0.2, 0.2, 0.25);
+    cairo_fill(cr);
+    cairo_restore(cr);
+  }
+  if (c.cfree) {
+    const double tints[5][3] = {{0.55, 0.75, 0.95}, {0.6, 0.9, 0.6}, {0.95, 0.8, 0.5}, {0.8, 0.65, 0.95}, {0.6, 0.9, 0.9}};
+    for (std::size_t i = 0; i < c.cfree->size(); ++i) {
+      regionPath((*c.cfree)[i]);
+      const auto& t = tints[i % 5];
+      cairo_set_source_rgba(cr, t[0], t[1], t[2], 0.55);
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgb(cr, 0.1, 0.2, 0.5);
+      cairo_set_line_width(cr, 1.2);
+      cairo_stroke(cr);
+    }
+  }
   if (c.cells) {
     const double D = c.cells->subSizeD();
     const double ox = c.cells->originX().get_d(), oy = c.cells->originY().get_d();

@@ -65,7 +65,7 @@ CurveRegion regionOf(const CPolygonWithHoles& pwh) {
 struct CSpace::Impl {
   Rational radius;
   double eps = 0;
-  PolygonSet obstacles;                      ///< union of all C-obstacles
+  std::vector<Ring> outers;                  ///< the regions' outer rings (for obstacles())
   std::vector<CPolygonWithHoles> parts;      ///< components of C-free, largest first
   std::vector<PolygonSet> partSets;          ///< one set per component, for point location
   std::vector<double> areas;
@@ -75,6 +75,7 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0");
   if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
   impl_->radius = radius;
+  for (const Region& reg : w.regions) impl_->outers.push_back(reg.outer);
   const Box b = w.bbox();
   const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
   impl_->eps = relativeEps * std::max(extent, 1e-12);
@@ -83,20 +84,23 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   const Rational pad = 4 * radius + 1;
   const Ring frame = {{Rational(b.xmin - pad), Rational(b.ymin - pad)}, {Rational(b.xmax + pad), Rational(b.ymin - pad)},
                       {Rational(b.xmax + pad), Rational(b.ymax + pad)}, {Rational(b.xmin - pad), Rational(b.ymax + pad)}};
-  std::vector<CPolygonWithHoles> cobs;
-  PolygonSet free;
+  // Each region on its own: the disc in one region never reaches another (they are separated by
+  // walls), and the outside of one region contains the others. Regions are disjoint, so their
+  // components are simply collected (joining them one by one would cost quadratic time).
   for (const Region& reg : w.regions) {
     // outside of the region: the frame with the region's outer ring as a hole; its offset shrinks
     // the hole by r, which is the region eroded by r
+    std::vector<CPolygonWithHoles> cobs;
     const LinearPolygon outerHole = linear(reg.outer, false);
     const LinearPolygonWithHoles outside(linear(frame, true), &outerHole, &outerHole + 1);
     cobs.push_back(CGAL::approximated_offset_2(outside, r, impl_->eps));
     for (const Ring& h : reg.holes) cobs.push_back(CGAL::approximated_offset_2(linear(h, true), r, impl_->eps));
-    free.join(CPolygonWithHoles(curved(reg.outer, true)));
+    PolygonSet blocked;
+    blocked.join(cobs.begin(), cobs.end());  // one range join: divide and conquer inside CGAL
+    PolygonSet regionFree(CPolygonWithHoles(curved(reg.outer, true)));
+    regionFree.difference(blocked);
+    regionFree.polygons_with_holes(std::back_inserter(impl_->parts));
   }
-  impl_->obstacles.join(cobs.begin(), cobs.end());
-  free.difference(impl_->obstacles);
-  free.polygons_with_holes(std::back_inserter(impl_->parts));
   for (const auto& p : impl_->parts) {
     double a = detail::polygonArea(p.outer_boundary());
     for (auto h = p.holes_begin(); h != p.holes_end(); ++h) a += detail::polygonArea(*h);
@@ -145,8 +149,15 @@ std::vector<CurveRegion> CSpace::components() const {
 }
 
 std::vector<CurveRegion> CSpace::obstacles() const {
+  // W's outer boundaries minus C-free; computed on demand (pictures and files only)
+  std::vector<CPolygonWithHoles> outers;
+  for (const Ring& o : impl_->outers) outers.emplace_back(curved(o, true));
+  PolygonSet blocked, free;
+  blocked.insert(outers.begin(), outers.end());  // interior-disjoint: no overlay needed
+  free.insert(impl_->parts.begin(), impl_->parts.end());
+  blocked.difference(free);
   std::vector<CPolygonWithHoles> pw;
-  impl_->obstacles.polygons_with_holes(std::back_inserter(pw));
+  blocked.polygons_with_holes(std::back_inserter(pw));
   std::vector<CurveRegion> out;
   for (const auto& p : pw) out.push_back(regionOf(p));
   return out;

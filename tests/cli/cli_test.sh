@@ -83,6 +83,16 @@ cmp -s "$T/good.json" "$T/again.json" && ok || bad "same input, different output
 "$CK" plan --help | grep -q -- '--planner' && ok || bad "help"
 "$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/good.json" --start 1,1 > "$T/start.out"; rc=$?
 [ $rc -eq 1 ] && grep -q "violation \[start\]" "$T/start.out" && ok || bad "start not checked (rc $rc)"
+# C-space
+"$CK" cspace --map "$DATA/pillars.wkt" --radius 0.5 --start 1,1 --out "$T/cs.json" --picture "$T/cs.svg" > /dev/null && grep -q '"format": "coverkit.cspace/1"' "$T/cs.json" && grep -q '"start_component": 0' "$T/cs.json" && grep -q '"type": "arc"' "$T/cs.json" && [ -s "$T/cs.svg" ] && ok || bad "cspace json"
+"$CK" cspace --map "$DATA/pillars.wkt" --radius 0.5 --out "$T/cs.geojson" > /dev/null && grep -q '"cobstacle"' "$T/cs.geojson" && ok || bad "cspace geojson"
+"$CK" cspace --map "$DATA/pillars.wkt" --radius 0.5 --out "$T/cs2.json" > /dev/null; "$CK" cspace --map "$DATA/pillars.wkt" --radius 0.5 --out "$T/cs3.json" > /dev/null
+cmp -s "$T/cs2.json" "$T/cs3.json" && ok || bad "cspace not deterministic"
+"$CK" render --map "$DATA/pillars.wkt" --radius 0.5 --planner stc --cspace --out "$T/overlay.png" && [ -s "$T/overlay.png" ] && ok || bad "render --cspace"
+expect_bad "cspace radius 0" "robot radius must be > 0" cspace --map "$T/room.wkt" --radius 0 --out "$T/out.json"
+expect_bad "cspace start in obstacle" "inside an obstacle" cspace --map "$T/room.wkt" --radius 0.25 --start 5,5 --out "$T/out.json"
+expect_bad "cspace bad format" "unknown output format" cspace --map "$T/room.wkt" --radius 0.25 --out "$T/out.csv"
+expect_bad "cspace self-intersecting" "self-intersecting ring" cspace --map "$T/bowtie.wkt" --radius 0.25 --out "$T/out.json"
 # a path that cuts through the obstacle is reported invalid (exit 1), with the segment
 cat > "$T/cut.json" <<'JSON'
 {"format":"coverkit.path/1","planner":"hand","robot_radius":0.25,"robots":[{"start":[1,5],"segments":[{"type":"line","from":[1,5],"to":[9,5]}]}]}

@@ -41,10 +41,13 @@ TEST(CSpace, SquareGivesARoundedSquare) {
   const double expected = 9.5 * 9.5 - (4 + 8 * 0.25 + M_PI / 16);
   EXPECT_NEAR(cs.area(), expected, 1e-12 * expected);
   // the C-obstacle of the square: straight sides and four quarter circles about the corners
-  std::size_t arcs = 0, lines = 0;
+  std::size_t arcs = 0, lines = 0, found = 0;
   for (const CurveRegion& o : cs.obstacles())
-    if (std::abs(o.area - (4 + 2 + M_PI / 16)) < 1e-9)
+    if (std::abs(o.area - (4 + 2 + M_PI / 16)) < 1e-9) {
+      ++found;
       for (const PathSegment& s : o.outer.pieces) (s.kind == PathSegment::Kind::kArc ? arcs : lines) += 1;
+    }
+  EXPECT_EQ(found, 1u);
   EXPECT_EQ(lines, 4u);
   EXPECT_GE(arcs, 4u);  // each quarter circle may be split at its x-extreme points
 }
@@ -131,6 +134,18 @@ TEST(CSpace, GridMapAndTheSamePolygonsGiveTheSameCFree) {
   const CSpace a(g, ratio(1, 5)), b(p, ratio(1, 5));
   EXPECT_NEAR(a.area(), b.area(), 1e-12);
   EXPECT_EQ(a.componentCount(), b.componentCount());
+}
+
+TEST(CSpace, RegionsAreSeparate) {
+  // two rooms side by side as two polygons: each has its own C-free
+  const Workspace w = datasets::parseWkt("MULTIPOLYGON(((0 0, 4 0, 4 4, 0 4, 0 0)),((5 0, 9 0, 9 4, 5 4, 5 0)))", "two.wkt");
+  const CSpace cs(w, ratio(1, 2), 1e-15);
+  EXPECT_EQ(cs.componentCount(), 2u);
+  EXPECT_NEAR(cs.area(), 2 * 9.0, 1e-12);
+  // and the band along the walls: W minus C-free
+  double band = 0;
+  for (const CurveRegion& o : cs.obstacles()) band += o.area;
+  EXPECT_NEAR(band, 32 - 18, 1e-12);
 }
 
 TEST(CSpace, ComponentOfAPointAndBadRadius) {

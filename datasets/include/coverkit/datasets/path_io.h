@@ -1,9 +1,11 @@
 #pragma once
 // Path files: JSON "coverkit.path/1", CSV (robot,seq,x,y) and GeoJSON LineStrings. Spec: docs/formats.md.
 // Writers never leave a partial file: they write to a temporary file and rename it on success.
+#include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/path.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +33,18 @@ void writePathFile(const std::string& file, const PathDocument& doc);
 std::string pathJson(const PathDocument& doc);
 /// Reads a JSON path file (or a CSV one: consecutive rows of a robot become line segments).
 PathDocument readPathFile(const std::string& file);
+
+/// C-space files ("coverkit.cspace/1" JSON, or GeoJSON with arcs sampled), docs/formats.md.
+struct CSpaceDocument {
+  std::string map;
+  Rational robotRadius;
+  double epsilon = 0;
+  double freeArea = 0, cfreeArea = 0;
+  std::optional<PointD> start;
+  int startComponent = -1;
+  std::vector<CurveRegion> components, obstacles;
+};
+void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc);
 
 /// Writes `content` to `file` atomically (temporary file + rename).
 void writeFileAtomically(const std::string& file, const std::string& content);

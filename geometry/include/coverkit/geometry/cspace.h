@@ -48,7 +48,9 @@ public:
   bool contains(const Point& p) const { return componentOf(p) >= 0; }
   double area() const;                          ///< area of C-free
   std::vector<CurveRegion> components() const;  ///< the components of C-free, largest first
-  std::vector<CurveRegion> obstacles() const;   ///< the C-obstacles (united), for pictures
+  /// The C-obstacles within W (W minus C-free: obstacles ⊕ disc and the band along W's boundary),
+  /// united, for pictures and files.
+  std::vector<CurveRegion> obstacles() const;
 
 private:
   struct Impl;
