@@ -163,4 +163,144 @@ std::vector<CurveRegion> CSpace::obstacles() const {
   return out;
 }
 
+CellState CSpaceCells::mega(int col, int row) const {
+  const CellState a = subState(2 * col, 2 * row), b = subState(2 * col + 1, 2 * row), c = subState(2 * col, 2 * row + 1),
+                  d = subState(2 * col + 1, 2 * row + 1);
+  if (a == b && b == c && c == d && a != CellState::kPartial) return a;
+  return CellState::kPartial;
+}
+
+const CSpaceCells::MegaContour* CSpaceCells::contour(int col, int row) const {
+  auto it = std::lower_bound(contours.begin(), contours.end(), std::make_pair(row, col),
+                             [](const MegaContour& m, const std::pair<int, int>& k) { return std::make_pair(m.row, m.col) < k; });
+  return it != contours.end() && it->col == col && it->row == row ? &*it : nullptr;
+}
+
+namespace {
+
+struct Clipper {
+  const CellGrid& grid;
+  bool wantContours;
+  CSpaceCells& out;
+
+  CPolygon box(int c0, int r0, int c1, int r1) const {  // sub-cell index range [c0, c1) × [r0, r1)
+    const Rational& D = grid.subSize();
+    const Rational x0 = grid.originX() + D * c0, x1 = grid.originX() + D * c1;
+    const Rational y0 = grid.originY() + D * r0, y1 = grid.originY() + D * r1;
+    return curved({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, true);
+  }
+  void fill(int c0, int r0, int c1, int r1, CellState s) {
+    for (int r = r0; r < r1; ++r)
+      for (int c = c0; c < c1; ++c) out.sub[static_cast<std::size_t>(r) * out.subCols + c] = s;
+  }
+  /// S is C-free ∩ the range's box. Ranges are in mega-cells: [m0, m1) × [n0, n1).
+  void recurse(const PolygonSet& S, int m0, int n0, int m1, int n1) {
+    if (S.is_empty()) return fill(2 * m0, 2 * n0, 2 * m1, 2 * n1, CellState::kBlocked);
+    PolygonSet rest(CPolygonWithHoles(box(2 * m0, 2 * n0, 2 * m1, 2 * n1)));
+    rest.difference(S);
+    if (rest.is_empty()) return fill(2 * m0, 2 * n0, 2 * m1, 2 * n1, CellState::kFree);
+    if (m1 - m0 == 1 && n1 - n0 == 1) return megaCell(S, m0, n0);
+    const int mm = m1 - m0 > 1 ? (m0 + m1) / 2 : m1, nm = n1 - n0 > 1 ? (n0 + n1) / 2 : n1;
+    for (auto [a0, a1] : {std::pair{m0, mm}, std::pair{mm, m1}})
+      for (auto [b0, b1] : {std::pair{n0, nm}, std::pair{nm, n1}}) {
+        if (a0 >= a1 || b0 >= b1) continue;
+        PolygonSet part(CPolygonWithHoles(box(2 * a0, 2 * b0, 2 * a1, 2 * b1)));
+        part.intersection(S);
+        recurse(part, a0, b0, a1, b1);
+      }
+  }
+  void megaCell(const PolygonSet& S, int m, int n) {
+    for (int dr = 0; dr < 2; ++dr)
+      for (int dc = 0; dc < 2; ++dc) {
+        const int c = 2 * m + dc, r = 2 * n + dr;
+        PolygonSet part(CPolygonWithHoles(box(c, r, c + 1, r + 1)));
+        part.intersection(S);
+        CellState st = CellState::kPartial;
+        if (part.is_empty()) st = CellState::kBlocked;
+        else {
+          PolygonSet rest(CPolygonWithHoles(box(c, r, c + 1, r + 1)));
+          rest.difference(part);
+          if (rest.is_empty()) st = CellState::kFree;
+        }
+        out.sub[static_cast<std::size_t>(r) * out.subCols + c] = st;
+      }
+    if (!wantContours) return;
+    CSpaceCells::MegaContour mc;
+    mc.col = m;
+    mc.row = n;
+    std::vector<CPolygonWithHoles> pw;
+    S.polygons_with_holes(std::back_inserter(pw));
+    const Rational& D = grid.subSize();
+    const K::FT x0 = ft(grid.originX() + 2 * D * m), x1 = ft(grid.originX() + 2 * D * (m + 1));
+    const K::FT y0 = ft(grid.originY() + 2 * D * n), y1 = ft(grid.originY() + 2 * D * (n + 1));
+    auto onBorder = [&](const Traits::X_monotone_curve_2& cv) {
+      if (cv.is_circular()) return false;
+      const auto &a = cv.source(), &b = cv.target();
+      auto same = [](const auto& u, const K::FT& v) { return CGAL::compare(u, Traits::CoordNT(v)) == CGAL::EQUAL; };
+      return (same(a.x(), x0) && same(b.x(), x0)) || (same(a.x(), x1) && same(b.x(), x1)) || (same(a.y(), y0) && same(b.y(), y0)) ||
+             (same(a.y(), y1) && same(b.y(), y1));
+    };
+    auto chainsOf = [&](const CPolygon& loop) {
+      std::vector<Traits::X_monotone_curve_2> cs(loop.curves_begin(), loop.curves_end());
+      const std::size_t n = cs.size();
+      std::size_t start = n;  // first curve after a border curve
+      for (std::size_t i = 0; i < n; ++i)
+        if (onBorder(cs[i]) && !onBorder(cs[(i + 1) % n])) { start = (i + 1) % n; break; }
+      if (start == n) {  // no border curve: the loop is wholly inside (or wholly the border)
+        if (n > 0 && !onBorder(cs[0])) {
+          CSpaceCells::Chain ch;
+          ch.closed = true;
+          for (const auto& cv : cs) ch.pieces.push_back(detail::toSegment(cv));
+          mc.chains.push_back(std::move(ch));
+        }
+        return;
+      }
+      CSpaceCells::Chain ch;
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto& cv = cs[(start + k) % n];
+        if (onBorder(cv)) {
+          if (!ch.pieces.empty()) {
+            ch.entry = ch.pieces.front().from;
+            ch.exit = ch.pieces.back().to;
+            mc.chains.push_back(std::move(ch));
+            ch = CSpaceCells::Chain();
+          }
+          continue;
+        }
+        ch.pieces.push_back(detail::toSegment(cv));
+      }
+      if (!ch.pieces.empty()) {
+        ch.entry = ch.pieces.front().from;
+        ch.exit = ch.pieces.back().to;
+        mc.chains.push_back(std::move(ch));
+      }
+    };
+    for (const auto& p : pw) {
+      mc.pieces.push_back(regionOf(p));
+      chainsOf(p.outer_boundary());
+      for (auto h = p.holes_begin(); h != p.holes_end(); ++h) chainsOf(*h);
+    }
+    out.contours.push_back(std::move(mc));
+  }
+};
+
+}  // namespace
+
+CSpaceCells CSpace::classify(const CellGrid& grid, bool contours) const {
+  CSpaceCells out;
+  out.subCols = grid.subCols();
+  out.subRows = grid.subRows();
+  out.sub.assign(static_cast<std::size_t>(out.subCols) * out.subRows, CellState::kBlocked);
+  if (grid.megaCount() == 0) return out;
+  Clipper clip{grid, contours, out};
+  PolygonSet S;
+  S.insert(impl_->parts.begin(), impl_->parts.end());
+  PolygonSet all(CPolygonWithHoles(clip.box(0, 0, grid.subCols(), grid.subRows())));
+  S.intersection(all);
+  clip.recurse(S, 0, 0, grid.megaCols(), grid.megaRows());
+  std::sort(out.contours.begin(), out.contours.end(),
+            [](const auto& a, const auto& b) { return std::make_pair(a.row, a.col) < std::make_pair(b.row, b.col); });
+  return out;
+}
+
 }  // namespace coverkit

@@ -157,3 +157,73 @@ TEST(CSpace, ComponentOfAPointAndBadRadius) {
   EXPECT_EQ(cs.componentOf({Rational(1, 4), Rational(5)}), -1);  // closer than r to the wall
   EXPECT_GE(cs.componentOf({Rational(2), Rational(5)}), 0);
 }
+
+TEST(CSpaceCells, AreasAddUpAndStatesAgreeWithPoints) {
+  datasets::PolygonWorldSpec s;
+  s.count = 8;
+  s.shape = datasets::ObstacleShape::kNonConvex;
+  s.seed = 4;
+  const Workspace w = datasets::generatePolygonWorld(s);
+  const Rational r(2, 5);
+  const CSpace cs(w, r);
+  const CellGrid grid = classifyCells(w, 2 * r);
+  const CSpaceCells cc = cs.classify(grid);
+  const double D = grid.subSizeD();
+  // C-free area = free mega-cells + the pieces of partial ones
+  double sum = 0;
+  std::size_t partial = 0;
+  for (int m = 0; m < grid.megaRows(); ++m)
+    for (int c = 0; c < grid.megaCols(); ++c) {
+      if (cc.mega(c, m) == CellState::kFree) sum += 4 * D * D;
+      if (cc.mega(c, m) == CellState::kPartial) {
+        ++partial;
+        const auto* mc = cc.contour(c, m);
+        ASSERT_NE(mc, nullptr);
+        for (const CurveRegion& p : mc->pieces) sum += p.area;
+      }
+    }
+  EXPECT_NEAR(sum, cs.area(), 1e-9 * cs.area());
+  EXPECT_EQ(partial, cc.contours.size());
+  // free sub-cells: corners and centre in C-free; blocked: centre not strictly inside
+  for (int row = 0; row < grid.subRows(); ++row)
+    for (int col = 0; col < grid.subCols(); ++col) {
+      const Point ctr = grid.subCenter(col, row);
+      if (cc.subState(col, row) == CellState::kFree) {
+        EXPECT_TRUE(cs.contains(ctr));
+        EXPECT_TRUE(cs.contains({grid.originX() + grid.subSize() * col, grid.originY() + grid.subSize() * row}));
+      }
+      if (cc.subState(col, row) == CellState::kBlocked) {
+        // a point a hair inside the cell's centre region is outside C-free or on its boundary:
+        // checked with the exact centre; the centre can be on the boundary only in degenerate cases
+        if (cs.contains(ctr)) ADD_FAILURE() << "blocked cell " << col << "," << row << " has its centre in C-free";
+      }
+    }
+}
+
+TEST(CSpaceCells, ChainsRunFromBorderToBorder) {
+  const Workspace w = boxWith({{{3, 3}, {5, 3}, {4, 5}}}, 8, 8);
+  const CSpace cs(w, Rational(1, 2));
+  const CellGrid grid = classifyCells(w, Rational(1));
+  const CSpaceCells cc = cs.classify(grid);
+  ASSERT_FALSE(cc.contours.empty());
+  std::size_t chains = 0;
+  for (const auto& mc : cc.contours) {
+    const double x0 = 2.0 * mc.col, x1 = x0 + 2, y0 = 2.0 * mc.row, y1 = y0 + 2;
+    auto onBorder = [&](PointD p) {
+      return std::abs(p.x - x0) < 1e-9 || std::abs(p.x - x1) < 1e-9 || std::abs(p.y - y0) < 1e-9 || std::abs(p.y - y1) < 1e-9;
+    };
+    for (const auto& ch : mc.chains) {
+      ++chains;
+      ASSERT_FALSE(ch.pieces.empty());
+      for (std::size_t i = 1; i < ch.pieces.size(); ++i) {
+        EXPECT_NEAR(ch.pieces[i].from.x, ch.pieces[i - 1].to.x, 1e-9);
+        EXPECT_NEAR(ch.pieces[i].from.y, ch.pieces[i - 1].to.y, 1e-9);
+      }
+      if (!ch.closed) {
+        EXPECT_TRUE(onBorder(ch.entry)) << mc.col << "," << mc.row;
+        EXPECT_TRUE(onBorder(ch.exit)) << mc.col << "," << mc.row;
+      }
+    }
+  }
+  EXPECT_GT(chains, 0u);
+}

@@ -13,6 +13,7 @@
 // Decision: two obstacles exactly 2r apart leave no passage. In exact arithmetic the gap is a single
 // point of C-free; the conservative approximation closes it, and a path through it would have zero
 // margin anyway.
+#include <coverkit/geometry/cell_grid.h>
 #include <coverkit/geometry/path.h>
 
 #include <memory>
@@ -30,6 +31,34 @@ struct CurveRegion {
   CurveLoop outer;
   std::vector<CurveLoop> holes;
   double area = 0;
+};
+
+/// Cells classified by C-space (the robot's centre), with the C-free contour of every partial
+/// mega-cell. Sub-cell states: free = the closed cell lies in C-free (the centre may be anywhere in
+/// it); blocked = the cell and C-free share no interior point (touching along an edge or a point
+/// counts as blocked); partial = the rest. A mega-cell is free when its four sub-cells are, blocked
+/// when they all are, partial otherwise.
+struct CSpaceCells {
+  int subCols = 0, subRows = 0;
+  std::vector<CellState> sub;   ///< row-major, row 0 at the bottom, the CellGrid's indexing
+  CellState subState(int col, int row) const { return sub[static_cast<std::size_t>(row) * subCols + col]; }
+  CellState mega(int col, int row) const;
+
+  /// A partial mega-cell: C-free ∩ cell, and the boundary of C-free inside the cell as chains in
+  /// boundary order (C-free on the left). A chain starts where it enters the cell's border (`entry`)
+  /// and ends where it leaves it (`exit`); a closed chain (an obstacle wholly inside) has none.
+  struct Chain {
+    std::vector<PathSegment> pieces;
+    bool closed = false;
+    PointD entry, exit;
+  };
+  struct MegaContour {
+    int col = 0, row = 0;
+    std::vector<CurveRegion> pieces;
+    std::vector<Chain> chains;
+  };
+  std::vector<MegaContour> contours;   ///< partial mega-cells, in row-major order
+  const MegaContour* contour(int col, int row) const;
 };
 
 class CSpace {
@@ -51,6 +80,11 @@ public:
   /// The C-obstacles within W (W minus C-free: obstacles ⊕ disc and the band along W's boundary),
   /// united, for pictures and files.
   std::vector<CurveRegion> obstacles() const;
+
+  /// Classifies the cells of `grid` by C-space: recursive quadrant clipping, so the cost follows the
+  /// cells that C-free's boundary crosses, not all cells × all curves. With `contours`, partial
+  /// mega-cells get their C-free pieces and boundary chains.
+  CSpaceCells classify(const CellGrid& grid, bool contours = true) const;
 
 private:
   struct Impl;
