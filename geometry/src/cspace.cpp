@@ -74,6 +74,7 @@ struct CSpace::Impl {
 CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) : impl_(std::make_unique<Impl>()) {
   if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0");
   if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
+  checkWorkspace(w);  // CGAL's preconditions are not input validation
   impl_->radius = radius;
   for (const Region& reg : w.regions) impl_->outers.push_back(reg.outer);
   const Box b = w.bbox();

@@ -45,8 +45,6 @@ Workspace parseTextGrid(const std::string& text, const std::string& name);
 /// (a vertex only where the boundary turns). Exact; O(pixels).
 Workspace gridToWorkspace(const OccupancyGrid& grid, const std::string& name);
 
-/// Rejects rings that are degenerate, self-intersecting, with repeated vertices or non-finite
-/// coordinates, holes not strictly inside their outer ring, and overlapping rings. Exact.
-void checkWorkspace(const Workspace& w);
+/// Polygon input is checked with coverkit::checkWorkspace (geometry/types.h) before anything uses it.
 
 }  // namespace coverkit::datasets

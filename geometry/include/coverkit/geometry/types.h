@@ -47,6 +47,10 @@ struct Workspace {
 Rational signedArea2(const Ring& ring);
 /// Exact area of the free space of a workspace.
 Rational freeArea(const Workspace& w);
+/// Rejects (InputError) rings that are degenerate, self-intersecting or have repeated vertices,
+/// holes not strictly inside their outer ring or inside each other, and overlapping polygons.
+/// Rings may touch at vertices. Exact; O(n log n) plus the pairs of edges that overlap in x.
+void checkWorkspace(const Workspace& w);
 /// Orients outer rings counter-clockwise and holes clockwise.
 void normalise(Workspace& w);
 

@@ -1,0 +1,156 @@
+// Exact validation of polygon input, before any geometry (CGAL's preconditions are assertions,
+// not input validation).
+#include <coverkit/geometry/error.h>
+#include <coverkit/geometry/types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace coverkit {
+
+namespace {
+
+int orient(const Point& a, const Point& b, const Point& c) {
+  const Rational v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  return sgn(v);
+}
+bool onSegment(const Point& a, const Point& b, const Point& p) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+/// 0: disjoint, 1: touch only at a shared endpoint, 2: any other contact.
+int contact(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  bool meet = false;
+  if (o1 * o2 < 0 && o3 * o4 < 0) return 2;
+  if (o1 == 0 && onSegment(a, b, c)) meet = true;
+  if (o2 == 0 && onSegment(a, b, d)) meet = true;
+  if (o3 == 0 && onSegment(c, d, a)) meet = true;
+  if (o4 == 0 && onSegment(c, d, b)) meet = true;
+  if (!meet) return 0;
+  // collinear overlap or a vertex on the other's interior is more than an endpoint touch
+  const bool shared = a == c || a == d || b == c || b == d;
+  if (!shared) return 2;
+  if (o1 == 0 && o2 == 0) {  // collinear: overlapping beyond the shared point?
+    const Point& s = (a == c || a == d) ? a : b;
+    const Point& e1 = (s == a) ? b : a;
+    const Point& e2 = (s == c) ? d : c;
+    // same direction from s means overlap
+    if (sgn(Rational((e1.x - s.x) * (e2.x - s.x) + (e1.y - s.y) * (e2.y - s.y))) > 0) return 2;
+  }
+  // one segment's far end on the other segment's interior
+  if (o1 == 0 && !(c == a || c == b) && onSegment(a, b, c)) return 2;
+  if (o2 == 0 && !(d == a || d == b) && onSegment(a, b, d)) return 2;
+  if (o3 == 0 && !(a == c || a == d) && onSegment(c, d, a)) return 2;
+  if (o4 == 0 && !(b == c || b == d) && onSegment(c, d, b)) return 2;
+  return 1;
+}
+
+std::string where(std::size_t region, int hole, std::size_t vertex) {
+  std::ostringstream os;
+  os << "polygon " << region + 1 << (hole < 0 ? std::string(" outer ring") : " hole " + std::to_string(hole + 1))
+     << " vertex " << vertex + 1;
+  return os.str();
+}
+
+bool pointInRing(const Ring& r, const Point& p) {
+  bool in = false;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point& a = r[i];
+    const Point& b = r[(i + 1) % r.size()];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const Rational x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (x > p.x) in = !in;
+    }
+  }
+  return in;
+}
+
+}  // namespace
+
+void checkWorkspace(const Workspace& w) {
+  if (w.regions.empty()) throw InputError(w.name, "workspace", "no polygon: the free space is empty");
+  struct E {
+    const Point* a;
+    const Point* b;
+    std::size_t region;
+    int hole;
+    std::size_t idx;
+    double x0, y0, x1, y1;
+  };
+  std::vector<E> edges;
+  for (std::size_t ri = 0; ri < w.regions.size(); ++ri) {
+    const Region& reg = w.regions[ri];
+    for (int h = -1; h < static_cast<int>(reg.holes.size()); ++h) {
+      const Ring& ring = h < 0 ? reg.outer : reg.holes[static_cast<std::size_t>(h)];
+      if (ring.size() < 3) throw InputError(w.name, where(ri, h, 0), "ring has fewer than 3 distinct vertices");
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        if (ring[i] == ring[(i + 1) % ring.size()])
+          throw InputError(w.name, where(ri, h, i), "repeated vertex");
+      bool collinear = true;
+      for (std::size_t i = 2; i < ring.size() && collinear; ++i) collinear = orient(ring[0], ring[1], ring[i]) == 0;
+      if (collinear) throw InputError(w.name, where(ri, h, 0), "ring has zero area (all vertices on one line)");
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Point& a = ring[i];
+        const Point& b = ring[(i + 1) % ring.size()];
+        edges.push_back({&a, &b, ri, h, i, std::min(a.x.get_d(), b.x.get_d()), std::min(a.y.get_d(), b.y.get_d()),
+                         std::max(a.x.get_d(), b.x.get_d()), std::max(a.y.get_d(), b.y.get_d())});
+      }
+    }
+  }
+  // Sweep over x with sorted edges: candidate pairs whose x-ranges overlap, then exact tests.
+  std::vector<std::size_t> order(edges.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return edges[i].x0 < edges[j].x0; });
+  const double eps = 1e-9;
+  std::vector<std::size_t> active;
+  for (std::size_t oi = 0; oi < order.size(); ++oi) {
+    const E& e = edges[order[oi]];
+    active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t k) { return edges[k].x1 < e.x0 - eps * (1 + std::abs(e.x0)); }),
+                 active.end());
+    for (std::size_t k : active) {
+      const E& f = edges[k];
+      if (f.y1 < e.y0 - eps * (1 + std::abs(e.y0)) || e.y1 < f.y0 - eps * (1 + std::abs(f.y0))) continue;
+      const int c = contact(*e.a, *e.b, *f.a, *f.b);
+      if (c == 0) continue;
+      const bool sameRing = e.region == f.region && e.hole == f.hole;
+      if (c == 1) {
+        if (sameRing) {
+          // adjacent edges share a vertex; other edges of one ring may not touch
+          const std::size_t n = e.hole < 0 ? w.regions[e.region].outer.size() : w.regions[e.region].holes[static_cast<std::size_t>(e.hole)].size();
+          const bool adjacent = (e.idx + 1) % n == f.idx || (f.idx + 1) % n == e.idx;
+          if (adjacent) continue;
+        } else {
+          continue;  // rings of a polygon may touch at a vertex
+        }
+      }
+      throw InputError(w.name, where(e.region, e.hole, e.idx),
+                       sameRing ? "self-intersecting ring (edge " + std::to_string(e.idx + 1) + " meets edge " + std::to_string(f.idx + 1) + ")"
+                                : "rings intersect (" + where(f.region, f.hole, f.idx) + ")");
+    }
+    active.push_back(order[oi]);
+  }
+  // Holes inside their outer ring, not inside another hole; polygons not inside each other.
+  for (std::size_t ri = 0; ri < w.regions.size(); ++ri) {
+    const Region& reg = w.regions[ri];
+    for (std::size_t h = 0; h < reg.holes.size(); ++h) {
+      // the midpoint of an edge is on no other ring (rings meet only at vertices)
+      const Point m{Rational((reg.holes[h][0].x + reg.holes[h][1].x) / 2), Rational((reg.holes[h][0].y + reg.holes[h][1].y) / 2)};
+      if (!pointInRing(reg.outer, m)) throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
+      for (std::size_t h2 = 0; h2 < reg.holes.size(); ++h2)
+        if (h2 != h && pointInRing(reg.holes[h2], m))
+          throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole lies inside hole " + std::to_string(h2 + 1));
+    }
+    const Point m{Rational((reg.outer[0].x + reg.outer[1].x) / 2), Rational((reg.outer[0].y + reg.outer[1].y) / 2)};
+    for (std::size_t rj = 0; rj < w.regions.size(); ++rj) {
+      if (rj == ri || !pointInRing(w.regions[rj].outer, m)) continue;
+      bool inHole = false;
+      for (const Ring& h : w.regions[rj].holes) inHole = inHole || pointInRing(h, m);
+      if (!inHole) throw InputError(w.name, where(ri, -1, 0), "polygon overlaps polygon " + std::to_string(rj + 1));
+    }
+  }
+}
+
+}  // namespace coverkit
