@@ -40,7 +40,7 @@ std::string ext(const std::string& f) {
 }  // namespace
 
 std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
-  return {{"subcell_coverage", m.subcellCoverage},
+  std::vector<std::pair<std::string, double>> f = {{"subcell_coverage", m.subcellCoverage},
           {"free_subcells", static_cast<double>(m.freeSubcells)},
           {"covered_subcells", static_cast<double>(m.coveredSubcells)},
           {"entered_subcells", static_cast<double>(m.enteredSubcells)},
@@ -57,6 +57,12 @@ std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
           {"turning_angle_deg", m.turningAngleDeg},
           {"time_s", m.time},
           {"segments", static_cast<double>(m.segments)}};
+  if (m.hasCoverable) {
+    f.emplace_back("coverable_area", m.coverableArea);
+    f.emplace_back("coverable_area_error", m.coverableAreaError);
+    f.emplace_back("coverable_coverage", m.coverableCoverage);
+  }
+  return f;
 }
 
 void writeFileAtomically(const std::string& file, const std::string& content) {

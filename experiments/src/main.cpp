@@ -146,12 +146,14 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
   Progress progress(scenarios.size() * names.size());
   std::ostringstream csv, md;
   csv << "planner,map,seed,params,status,valid,violations";
-  const Metrics none;
+  Metrics none;
+  none.hasCoverable = true;  // the demo always measures against the coverable region
   for (auto& [k, v] : datasets::metricFields(none)) csv << "," << k;
   csv << ",t_cells,t_graph,t_tree,t_path,t_total\n";
   md << "# coverkit demo\n\ncoverkit " << COVERKIT_VERSION << " (" << COVERKIT_GIT_REVISION << "), " << today() << ", host " << hostName()
      << ".\nEvery plan was checked by the independent validator (continuity, exact clearance, start).\n\n"
-     << "| map | planner | status | valid | sub-cell coverage | area coverage | length | turns | time (s) |\n|---|---|---|---|---|---|---|---|---|\n";
+     << "| map | planner | status | valid | sub-cell coverage | area coverage | coverable coverage | length | turns | time (s) |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
   int invalid = 0;
   for (const Scenario& s : scenarios) {
     const Problem problem = makeProblem((data / s.file).string(), s.radius, "", false, "");
@@ -164,7 +166,9 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
       for (auto& [k, v] : r.plan.timings) t[k] = v;
       csv << planner << "," << s.name << ",0,," << toString(r.plan.status) << "," << (r.validation.valid ? "true" : "false") << ","
           << r.validation.violations.size();
-      for (auto& [k, v] : datasets::metricFields(r.metrics)) csv << "," << formatDouble(v);
+      Metrics row = r.metrics;
+      row.hasCoverable = true;  // same columns for every row (zeros when the plan failed)
+      for (auto& [k, v] : datasets::metricFields(row)) csv << "," << formatDouble(v);
       csv << "," << formatDouble(t["cells"]) << "," << formatDouble(t["graph"]) << "," << formatDouble(t["tree"]) << ","
           << formatDouble(t["path"]) << "," << formatDouble(r.totalSeconds) << "\n";
       const std::string pic = s.name + "_" + planner + ".png";
@@ -177,9 +181,11 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
       pc.title = s.name + " / " + planner + " / r=" + s.radius + " / " + toString(r.plan.status);
       experiments::renderPicture((fs::path(outDir) / pic).string(), pc);
       std::ostringstream cov;
-      cov << std::fixed << std::setprecision(4) << r.metrics.subcellCoverage << " | " << r.metrics.areaCoverage;
+      cov << std::fixed << std::setprecision(4) << r.metrics.subcellCoverage << " | " << r.metrics.areaCoverage << " (" << r.metrics.areaMethod
+          << ") | " << r.metrics.coverableCoverage << " ± " << std::setprecision(4)
+          << (r.metrics.coverableArea > 0 ? r.metrics.coverableAreaError / r.metrics.coverableArea : 0);
       md << "| " << s.name << " | " << planner << " | " << toString(r.plan.status) << " | " << (r.validation.valid ? "yes" : "**no**") << " | "
-         << cov.str() << " (" << r.metrics.areaMethod << ") | " << formatDouble(std::round(r.metrics.length * 1000) / 1000) << " | "
+         << cov.str() << " | " << formatDouble(std::round(r.metrics.length * 1000) / 1000) << " | "
          << r.metrics.turns << " | " << formatDouble(std::round(r.totalSeconds * 10000) / 10000) << " |\n";
     }
   }
@@ -366,7 +372,7 @@ int main(int argc, char** argv) {
                                                 : experiments::parsePoint(start, "--start");
       const planners::PlanningContext ctx = planners::makeContext(problem);
       const ValidationReport v = validatePaths(ctx.problem, doc.paths);
-      const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths);
+      const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, experiments::defaultMetricOptions());
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);
       return v.valid ? 0 : 1;

@@ -8,7 +8,7 @@
 namespace coverkit::experiments {
 
 RunResult runOnce(const planners::PlanningContext& ctx, const std::string& planner, const std::map<std::string, std::string>& params,
-                  double timeLimit, const std::function<void(const std::string&)>& onPhase) {
+                  double timeLimit, const std::function<void(const std::string&)>& onPhase, const MetricOptions& metricOptions) {
   auto phase = [&](const char* name) {
     if (onPhase) onPhase(name);
   };
@@ -21,12 +21,18 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
     phase("validating");
     r.validation = validatePaths(ctx.problem, r.plan.paths);
     phase("metrics");
-    r.metrics = computeMetrics(ctx.problem, ctx.cells, r.plan.paths);
+    r.metrics = computeMetrics(ctx.problem, ctx.cells, r.plan.paths, metricOptions);
   } else {
     r.validation.valid = false;
     r.validation.violations.push_back({"status", 0, -1, std::string(toString(r.plan.status)) + ": " + r.plan.message});
   }
   return r;
+}
+
+MetricOptions defaultMetricOptions() {
+  MetricOptions o;
+  o.coverable = true;
+  return o;
 }
 
 Point parsePoint(const std::string& text, const std::string& option) {

@@ -17,10 +17,13 @@ struct RunResult {
   double totalSeconds = 0;
 };
 
+/// The metric options of the command line: everything, including the coverable region.
+MetricOptions defaultMetricOptions();
+
 /// `onPhase`, when set, is called as each phase starts ("planning", "validating", "metrics").
 RunResult runOnce(const planners::PlanningContext& context, const std::string& planner,
                   const std::map<std::string, std::string>& params, double timeLimit = 0,
-                  const std::function<void(const std::string&)>& onPhase = {});
+                  const std::function<void(const std::string&)>& onPhase = {}, const MetricOptions& metricOptions = defaultMetricOptions());
 
 /// Parses "X,Y" exactly.
 Point parsePoint(const std::string& text, const std::string& option);

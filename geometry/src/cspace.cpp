@@ -1,6 +1,7 @@
 // C-space of a disc robot with CGAL's approximated offsets (see cspace.h for the contract).
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/geometry/metrics.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/General_polygon_set_2.h>
@@ -66,6 +67,8 @@ struct CSpace::Impl {
   Rational radius;
   double eps = 0;
   std::vector<Ring> outers;                  ///< the regions' outer rings (for obstacles())
+  Workspace workspace;                       ///< kept for coverableArea
+  double relativeEps = 1e-6;
   std::vector<CPolygonWithHoles> parts;      ///< components of C-free, largest first
   std::vector<PolygonSet> partSets;          ///< one set per component, for point location
   std::vector<double> areas;
@@ -76,6 +79,8 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
   checkWorkspace(w);  // CGAL's preconditions are not input validation
   impl_->radius = radius;
+  impl_->workspace = w;
+  impl_->relativeEps = relativeEps;
   for (const Region& reg : w.regions) impl_->outers.push_back(reg.outer);
   const Box b = w.bbox();
   const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
@@ -162,6 +167,36 @@ std::vector<CurveRegion> CSpace::obstacles() const {
   std::vector<CurveRegion> out;
   for (const auto& p : pw) out.push_back(regionOf(p));
   return out;
+}
+
+double CSpace::coverableArea(int k, double& errorBound) const {
+  errorBound = 0;
+  if (k < 0 || static_cast<std::size_t>(k) >= impl_->parts.size()) return 0;
+  // inner part: the C-space of radius 2r, components lying in k (their vertices are 2r from any
+  // obstacle, hence strictly inside k: a vertex tells which component contains them)
+  const CSpace twice(impl_->workspace, Rational(2 * impl_->radius), impl_->relativeEps);
+  double inner = 0;
+  for (std::size_t i = 0; i < twice.impl_->parts.size(); ++i) {
+    const auto& outer = twice.impl_->parts[i].outer_boundary();
+    if (outer.size() == 0) continue;
+    const auto& v = outer.curves_begin()->source();
+    const Point p{exactFromDouble(CGAL::to_double(v.x())), exactFromDouble(CGAL::to_double(v.y()))};
+    if (componentOf(p) == k) inner += twice.impl_->areas[i];
+  }
+  // band: points within r of k's boundary
+  std::vector<Path> loops;
+  const CurveRegion region = regionOf(impl_->parts[static_cast<std::size_t>(k)]);
+  auto add = [&](const CurveLoop& l) {
+    if (l.pieces.empty()) return;
+    Path p;
+    p.start = l.pieces.front().from;
+    p.segments = l.pieces;
+    loops.push_back(std::move(p));
+  };
+  add(region.outer);
+  for (const CurveLoop& h : region.holes) add(h);
+  const double band = rasterCoveredArea(impl_->workspace, impl_->radius, loops, 4'000'000, errorBound);
+  return inner + band;
 }
 
 CellState CSpaceCells::mega(int col, int row) const {

@@ -1,6 +1,7 @@
 // Metrics that need no CGAL: grid coverage, length, turns, raster area. Formulas: docs/metrics.md.
 #include <coverkit/geometry/metrics.h>
 
+#include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
@@ -123,6 +124,20 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   double swept = 0;
   for (const Path& p : paths) swept += 2 * r * p.length() + M_PI * r * r;
   m.sweptAreaOverlap = area > 0 ? swept / area - 1 : 0;
+  if (o.coverable) {
+    const CSpace cs(problem.workspace, problem.robots.at(0).radius);
+    std::vector<int> seen;
+    for (const Path& p : paths) {
+      const int k = cs.componentOf({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
+      if (k < 0 || std::find(seen.begin(), seen.end(), k) != seen.end()) continue;
+      seen.push_back(k);
+      double err = 0;
+      m.coverableArea += cs.coverableArea(k, err);
+      m.coverableAreaError += err;
+    }
+    m.hasCoverable = true;
+    m.coverableCoverage = m.coverableArea > 0 ? area / m.coverableArea : 0;
+  }
   return m;
 }
 

@@ -72,7 +72,7 @@ expect_bad "bad CLI flag" "" plan --bogus
 if "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.json" --picture "$T/good.svg" > "$T/stdout"; then ok; else bad "plan failed"; fi
 [ -s "$T/good.svg" ] && ok || bad "no picture"
 if "$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/good.json" --json > "$T/eval.json"; then ok; else bad "evaluate failed: $(cat "$T/eval.json")"; fi
-grep -q '"valid": true' "$T/eval.json" && grep -q '"violations": \[\]' "$T/eval.json" && grep -q '"area_coverage"' "$T/eval.json" && ok || bad "evaluate JSON: $(head -c 300 "$T/eval.json")"
+grep -q '"valid": true' "$T/eval.json" && grep -q '"violations": \[\]' "$T/eval.json" && grep -q '"area_coverage"' "$T/eval.json" && grep -q '"coverable_coverage"' "$T/eval.json" && ok || bad "evaluate JSON: $(head -c 300 "$T/eval.json")"
 "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/again.json" > /dev/null
 cmp -s "$T/good.json" "$T/again.json" && ok || bad "same input, different output"
 "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.csv" > /dev/null && head -1 "$T/good.csv" | grep -q '^robot,seq,x,y$' && ok || bad "csv"

@@ -81,7 +81,9 @@ TEST(Fuzz, MutatedMapsLoadOrAreRejectedCleanly) {
         try {
           const auto ctx = testing_helpers::contextFor(w, r);
           const Plan plan = planners::runPlanner("stc", ctx, {});
-          if (succeeded(plan.status)) EXPECT_TRUE(testing_helpers::planIsValid(ctx, plan));
+          if (succeeded(plan.status)) {
+            EXPECT_TRUE(testing_helpers::planIsValid(ctx, plan));
+          }
         } catch (const InputError&) {
           // e.g. a cell size that would make too many cells
         }

@@ -93,7 +93,9 @@ TEST(CSpace, CoarseApproximationLiesInsideTheFineOne) {
   std::mt19937_64 rng(9);
   for (int i = 0; i < 400; ++i) {
     const Point p{ratio(static_cast<long>(rng() % 2000), 100), ratio(static_cast<long>(rng() % 2000), 100)};
-    if (coarse.contains(p)) EXPECT_TRUE(fine.contains(p));
+    if (coarse.contains(p)) {
+      EXPECT_TRUE(fine.contains(p));
+    }
   }
 }
 
@@ -226,4 +228,17 @@ TEST(CSpaceCells, ChainsRunFromBorderToBorder) {
     }
   }
   EXPECT_GT(chains, 0u);
+}
+
+TEST(CSpace, CoverableAreaOfARoomWithAPillar) {
+  // an axis-aligned room with a square pillar: the disc reaches everything but the room's four
+  // corners, where it leaves (4 - π)r² each; the pillar's corners are convex, reached exactly
+  const Rational r(1, 2);
+  const CSpace cs(boxWith({{{4, 4}, {6, 4}, {6, 6}, {4, 6}}}), r, 1e-12);
+  double err = 0;
+  const double a = cs.coverableArea(0, err);
+  const double expected = 100 - 4 - 4 * (1 - M_PI / 4) * 0.25;
+  EXPECT_LE(std::abs(a - expected), err + 1e-9);
+  EXPECT_LT(err, 0.01 * expected);
+  EXPECT_EQ(cs.coverableArea(7, err), 0);  // no such component
 }

@@ -81,6 +81,12 @@ public:
   /// united, for pictures and files.
   std::vector<CurveRegion> obstacles() const;
 
+  /// The area of the coverable region of component `k`: k ⊕ disc(r), everything a robot whose
+  /// centre stays in k could sweep. Computed as area(k ⊖ disc(r)) (the components of the C-space of
+  /// radius 2r that lie in k; constructed exactly, conservatively) plus area(∂k ⊕ disc(r))
+  /// (rasterised with a rigorous bound, returned in `errorBound`); the two are disjoint.
+  double coverableArea(int k, double& errorBound) const;
+
   /// Classifies the cells of `grid` by C-space: recursive quadrant clipping, so the cost follows the
   /// cells that C-free's boundary crosses, not all cells × all curves. With `contours`, partial
   /// mega-cells get their C-free pieces and boundary chains.

@@ -14,6 +14,9 @@ struct MetricOptions {
   std::size_t exactAreaMaxSegments = 3000;        ///< above this, area coverage is rasterised...
   std::size_t exactAreaMaxSegmentsClear = 20000;  ///< ...unless the path is clear (no clip to F needed)
   std::size_t rasterMaxPixels = 4'000'000;
+  /// Also measure against the coverable region (start's component of C-free ⊕ disc(r)); builds the
+  /// C-space (radius r and 2r), so it is off unless asked for.
+  bool coverable = false;
 };
 
 struct Metrics {
@@ -29,6 +32,10 @@ struct Metrics {
   double areaCoverageError = 0;        ///< bound on |areaCoverage − true value| (0 when exact)
   std::string areaMethod;              ///< "exact" or "raster"
   double sweptAreaOverlap = 0;         ///< (Σ 2r·len + πr²) / coveredArea − 1
+  bool hasCoverable = false;           ///< the three below were computed
+  double coverableArea = 0;            ///< area of (start components of C-free) ⊕ disc(r)
+  double coverableAreaError = 0;       ///< bound on |coverableArea − true value|
+  double coverableCoverage = 0;        ///< coveredArea / coverableArea
   double length = 0;
   std::size_t turns = 0;
   double turningAngleDeg = 0;
