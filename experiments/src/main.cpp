@@ -237,6 +237,8 @@ int main(int argc, char** argv) {
   eval->add_option("--path", pathFile, "path file (.json or .csv)")->required();
   eval->add_option("--start", start, "the robot's start X,Y: the path must begin there (default: wherever it begins)");
   eval->add_flag("--json", json, "print one JSON object");
+  bool evalCspace = false;
+  eval->add_flag("--cspace", evalCspace, "also check every piece against the (conservative) C-obstacles: violations of kind \"cspace\"");
 
   auto* render = app.add_subcommand("render", "draw a map with its cells, a planner's tree and a path");
   addMapOptions(render, true);
@@ -371,7 +373,13 @@ int main(int argc, char** argv) {
         problem.robots[i].start = start.empty() ? Point{exactFromDouble(doc.paths[i].start.x), exactFromDouble(doc.paths[i].start.y)}
                                                 : experiments::parsePoint(start, "--start");
       const planners::PlanningContext ctx = planners::makeContext(problem);
-      const ValidationReport v = validatePaths(ctx.problem, doc.paths);
+      ValidationOptions vo;
+      std::optional<CSpace> evalSpace;
+      if (evalCspace) {
+        evalSpace.emplace(ctx.problem.workspace, ctx.problem.robots[0].radius);
+        vo.cspace = &*evalSpace;
+      }
+      const ValidationReport v = validatePaths(ctx.problem, doc.paths, vo);
       const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, experiments::defaultMetricOptions());
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);

@@ -68,6 +68,26 @@ struct CSpace::Impl {
   double eps = 0;
   std::vector<Ring> outers;                  ///< the regions' outer rings (for obstacles())
   Workspace workspace;                       ///< kept for coverableArea
+  /// C-free as one set, kept alive for zone walks over its arrangement (built on first use; the
+  /// arrangement refers to the set's traits, so the set itself is kept, not a copy).
+  std::unique_ptr<PolygonSet> zoneSet;
+  PolygonSet::Arrangement_2& arr() {
+    if (!zoneSet) {
+      zoneSet = std::make_unique<PolygonSet>();
+      zoneSet->insert(parts.begin(), parts.end());
+    }
+    return zoneSet->arrangement();
+  }
+  /// Every face the curve's interior passes through is in C-free.
+  bool curveClear(const Traits::X_monotone_curve_2& cv) {
+    using Arr = PolygonSet::Arrangement_2;
+    std::vector<boost::variant<Arr::Vertex_handle, Arr::Halfedge_handle, Arr::Face_handle>> cells;
+    CGAL::zone(arr(), cv, std::back_inserter(cells));
+    for (const auto& c : cells)
+      if (const auto* f = boost::get<Arr::Face_handle>(&c))
+        if (!(*f)->contained()) return false;
+    return true;
+  }
   double relativeEps = 1e-6;
   std::vector<CPolygonWithHoles> parts;      ///< components of C-free, largest first
   std::vector<PolygonSet> partSets;          ///< one set per component, for point location
@@ -167,6 +187,37 @@ std::vector<CurveRegion> CSpace::obstacles() const {
   std::vector<CurveRegion> out;
   for (const auto& p : pw) out.push_back(regionOf(p));
   return out;
+}
+
+bool CSpace::segmentClear(const Point& a, const Point& b) const {
+  if (!contains(a) || !contains(b)) return false;
+  if (a == b) return true;
+  return impl_->curveClear(Traits::X_monotone_curve_2(K::Point_2(ft(a.x), ft(a.y)), K::Point_2(ft(b.x), ft(b.y))));
+}
+
+bool CSpace::arcClear(const Point& from, const Point& to, const Point& center, bool ccw) const {
+  if (!contains(from)) return false;
+  const Rational rho2 = (from.x - center.x) * (from.x - center.x) + (from.y - center.y) * (from.y - center.y);
+  const Rational d2 = (to.x - center.x) * (to.x - center.x) + (to.y - center.y) * (to.y - center.y);
+  if (rho2 == 0 || d2 == 0) return from == to && contains(from);
+  const K::Circle_2 circle(K::Point_2(ft(center.x), ft(center.y)), ft(rho2), ccw ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE);
+  Traits::Curve_2 curve;
+  if (from == to) {
+    curve = Traits::Curve_2(circle);
+  } else {
+    // the end: the ray through `to` meets the circle at center + (to − center)·sqrt(rho2 / d2)
+    const Rational q = rho2 / d2;
+    const Traits::Point_2 end(Traits::CoordNT(ft(center.x), ft(Rational(to.x - center.x)), ft(q)),
+                              Traits::CoordNT(ft(center.y), ft(Rational(to.y - center.y)), ft(q)));
+    curve = Traits::Curve_2(circle, Traits::Point_2(ft(from.x), ft(from.y)), end);
+  }
+  Traits traits;
+  std::vector<boost::variant<Traits::Point_2, Traits::X_monotone_curve_2>> parts;
+  traits.make_x_monotone_2_object()(curve, std::back_inserter(parts));
+  for (const auto& v : parts)
+    if (const auto* xc = boost::get<Traits::X_monotone_curve_2>(&v))
+      if (!impl_->curveClear(*xc)) return false;
+  return true;
 }
 
 double CSpace::coverableArea(int k, double& errorBound) const {

@@ -11,6 +11,7 @@
 #include <CGAL/squared_distance_2.h>
 
 #include <coverkit/geometry/cell_grid.h>
+#include <coverkit/geometry/cspace.h>
 
 #include <cmath>
 #include <sstream>
@@ -237,6 +238,12 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
                             : check.arc(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
       if (!why.empty()) add({s.kind == PathSegment::Kind::kArc && why.find("circle") != std::string::npos ? "arc" : "clearance",
                              R, S, why});
+      if (o.cspace) {
+        const bool clear = s.kind == PathSegment::Kind::kLine
+                               ? o.cspace->segmentClear(exactPoint(s.from), exactPoint(s.to))
+                               : o.cspace->arcClear(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
+        if (!clear) add({"cspace", R, S, "leaves C-free (r = " + formatDouble(robot.radius.get_d()) + ", eps " + formatDouble(o.cspace->epsilon()) + ")"});
+      }
       cur = s.to;
     }
     rep.exactTests += check.exactTests;

@@ -93,12 +93,14 @@ expect_bad "cspace radius 0" "robot radius must be > 0" cspace --map "$T/room.wk
 expect_bad "cspace start in obstacle" "inside an obstacle" cspace --map "$T/room.wkt" --radius 0.25 --start 5,5 --out "$T/out.json"
 expect_bad "cspace bad format" "unknown output format" cspace --map "$T/room.wkt" --radius 0.25 --out "$T/out.csv"
 expect_bad "cspace self-intersecting" "self-intersecting ring" cspace --map "$T/bowtie.wkt" --radius 0.25 --out "$T/out.json"
+"$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/good.json" --cspace --json | grep -q '"valid": true' && ok || bad "evaluate --cspace on a valid STC path"
 # a path that cuts through the obstacle is reported invalid (exit 1), with the segment
 cat > "$T/cut.json" <<'JSON'
 {"format":"coverkit.path/1","planner":"hand","robot_radius":0.25,"robots":[{"start":[1,5],"segments":[{"type":"line","from":[1,5],"to":[9,5]}]}]}
 JSON
 "$CK" evaluate --map "$T/room.wkt" --path "$T/cut.json" --json > "$T/cut.out"; rc=$?
 [ $rc -eq 1 ] && grep -q '"valid": false' "$T/cut.out" && grep -q '"kind": "clearance"' "$T/cut.out" && ok || bad "cut path not caught (rc $rc)"
+"$CK" evaluate --map "$T/room.wkt" --path "$T/cut.json" --json --cspace | grep -q '"kind": "cspace"' && ok || bad "cut path not caught by the C-space check"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -2,6 +2,7 @@
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/geometry/validate.h>
 
 #include <gtest/gtest.h>
 
@@ -241,4 +242,43 @@ TEST(CSpace, CoverableAreaOfARoomWithAPillar) {
   EXPECT_LE(std::abs(a - expected), err + 1e-9);
   EXPECT_LT(err, 0.01 * expected);
   EXPECT_EQ(cs.coverableArea(7, err), 0);  // no such component
+}
+
+TEST(CSpace, ClearanceAgainstCObstaclesIsConservativeAndExactOnStraightWalls) {
+  datasets::PolygonWorldSpec s;
+  s.count = 10;
+  s.shape = datasets::ObstacleShape::kConvex;
+  s.seed = 8;
+  const Workspace w = datasets::generatePolygonWorld(s);
+  const Rational r(3, 10);
+  const CSpace cs(w, r);
+  std::mt19937_64 rng(77);
+  int clear = 0, blocked = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Point a{ratio(static_cast<long>(rng() % 2000), 100), ratio(static_cast<long>(rng() % 2000), 100)};
+    const Point b{Rational(a.x + ratio(static_cast<long>(rng() % 400) - 200, 100)), Rational(a.y + ratio(static_cast<long>(rng() % 400) - 200, 100))};
+    const bool byCSpace = cs.segmentClear(a, b);
+    const bool exact = strictlyInside(w, a) && segmentClear(w, r, a, b);
+    if (byCSpace) {
+      EXPECT_TRUE(exact) << "C-space says clear, the exact test does not";
+    }
+    (byCSpace ? clear : blocked) += 1;
+  }
+  EXPECT_GT(clear, 30);
+  EXPECT_GT(blocked, 30);
+  // straight walls are offset exactly: a segment at distance exactly r from the box wall is clear
+  EXPECT_TRUE(cs.segmentClear({Rational(3, 10), Rational(1, 2)}, {Rational(3, 10), Rational(3, 2)}));
+  EXPECT_FALSE(cs.segmentClear({Rational(29, 100), Rational(1, 2)}, {Rational(29, 100), Rational(3, 2)}));
+}
+
+TEST(CSpace, ArcClearance) {
+  const CSpace cs(boxWith({{{4, 4}, {6, 4}, {6, 6}, {4, 6}}}), Rational(1, 2));
+  // radius 3 about the square's centre: clear; radius 1.5: meets the rounded corners
+  EXPECT_TRUE(cs.arcClear({Rational(8), Rational(5)}, {Rational(2), Rational(5)}, {Rational(5), Rational(5)}, true));
+  EXPECT_TRUE(cs.arcClear({Rational(8), Rational(5)}, {Rational(8), Rational(5)}, {Rational(5), Rational(5)}, true));  // full circle
+  EXPECT_FALSE(cs.arcClear({Rational(13, 2), Rational(5)}, {Rational(7, 2), Rational(5)}, {Rational(5), Rational(5)}, true));
+  // radius 4.6 reaches within 0.4 of the walls: not clear for r = 1/2
+  EXPECT_FALSE(cs.arcClear({ratio(96, 10), Rational(5)}, {ratio(4, 10), Rational(5)}, {Rational(5), Rational(5)}, false));
+  // the end is the ray through `to`: a far point on the same ray gives the same arc
+  EXPECT_TRUE(cs.arcClear({Rational(8), Rational(5)}, {Rational(5), Rational(100)}, {Rational(5), Rational(5)}, true));
 }

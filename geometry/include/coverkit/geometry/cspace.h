@@ -81,6 +81,15 @@ public:
   /// united, for pictures and files.
   std::vector<CurveRegion> obstacles() const;
 
+  /// Clearance against these C-obstacles, exact (an arrangement zone walk over C-free's boundary):
+  /// true when every point of the segment lies in the closed C-free. Touching the boundary, or
+  /// running along it, is clear. As the C-obstacles contain the exact ones, clear here implies clear
+  /// exactly; the converse may fail within eps of the boundary.
+  bool segmentClear(const Point& a, const Point& b) const;
+  /// The same for a circular arc about `center` from `from` (radius |from − center|), ccw or not, to
+  /// the ray through `to`; `from == to` is the full circle.
+  bool arcClear(const Point& from, const Point& to, const Point& center, bool ccw) const;
+
   /// The area of the coverable region of component `k`: k ⊕ disc(r), everything a robot whose
   /// centre stays in k could sweep. Computed as area(k ⊖ disc(r)) (the components of the C-space of
   /// radius 2r that lie in k; constructed exactly, conservatively) plus area(∂k ⊕ disc(r))

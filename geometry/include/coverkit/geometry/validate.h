@@ -8,6 +8,8 @@
 
 namespace coverkit {
 
+class CSpace;
+
 struct Violation {
   std::string kind;      ///< "continuity", "clearance", "start", "arc", "empty"
   int robot = 0;
@@ -29,6 +31,10 @@ struct ValidationOptions {
   /// Distance within which the path must start at the robot's start.
   double startTolerance = 1e-9;
   std::size_t maxViolations = 50;
+  /// When set, every piece is also checked against this C-space's (conservative) C-obstacles and
+  /// a failure is a violation of kind "cspace". The distance check above is already exact against
+  /// the exact C-obstacles; this one is stricter by up to the C-space's eps.
+  const CSpace* cspace = nullptr;
 };
 
 /// Validates one path per robot of `problem` (paths.size() must equal robots.size()).
