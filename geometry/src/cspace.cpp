@@ -8,6 +8,7 @@
 #include <CGAL/Gps_circle_segment_traits_2.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/Polygon_triangulation_decomposition_2.h>
 #include <CGAL/approximated_offset_2.h>
 
 #include "circle_segment_area.h"
@@ -42,6 +43,23 @@ CPolygon curved(const Ring& ring, bool ccw) {
   CPolygon out;
   for (auto e = p.edges_begin(); e != p.edges_end(); ++e) out.push_back(Traits::X_monotone_curve_2(e->source(), e->target()));
   return out;
+}
+
+/// Offsets of a polygon (with holes) whose union is its approximated offset. Small polygons are
+/// offset whole (convolution); large ones are triangulated first and every triangle is offset on
+/// its own, so that the caller's single range join unites them: the convolution of a large
+/// non-convex polygon grows quadratically (docs/performance.md: a 10,000-vertex star).
+template <class Polygon>
+void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double eps, std::vector<CPolygonWithHoles>& out) {
+  constexpr std::size_t kWhole = 2000;
+  if (vertices <= kWhole) {
+    out.push_back(CGAL::approximated_offset_2(p, r, eps));
+    return;
+  }
+  std::vector<LinearPolygon> triangles;
+  CGAL::Polygon_triangulation_decomposition_2<K> decompose;
+  decompose(p, std::back_inserter(triangles));
+  for (const LinearPolygon& t : triangles) out.push_back(CGAL::approximated_offset_2(t, r, eps));
 }
 
 CurveLoop loopOf(const CPolygon& pg) {
@@ -119,8 +137,8 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
     std::vector<CPolygonWithHoles> cobs;
     const LinearPolygon outerHole = linear(reg.outer, false);
     const LinearPolygonWithHoles outside(linear(frame, true), &outerHole, &outerHole + 1);
-    cobs.push_back(CGAL::approximated_offset_2(outside, r, impl_->eps));
-    for (const Ring& h : reg.holes) cobs.push_back(CGAL::approximated_offset_2(linear(h, true), r, impl_->eps));
+    offsetPieces(outside, reg.outer.size() + 4, r, impl_->eps, cobs);
+    for (const Ring& h : reg.holes) offsetPieces(linear(h, true), h.size(), r, impl_->eps, cobs);
     PolygonSet blocked;
     blocked.join(cobs.begin(), cobs.end());  // one range join: divide and conquer inside CGAL
     PolygonSet regionFree(CPolygonWithHoles(curved(reg.outer, true)));
