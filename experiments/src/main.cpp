@@ -301,8 +301,7 @@ int main(int argc, char** argv) {
       Progress progress(3);
       progress.step("reading the map");
       const Problem problem = makeProblem(map, radius, start, unknownFree, cellSize);
-      if (problem.robots[0].start && !strictlyInside(problem.workspace, *problem.robots[0].start))
-        throw InputError("--start", start, "start is outside the workspace or inside an obstacle of " + map);
+      planners::checkProblem(problem);
       progress.step("C-space");
       const CSpace cs(problem.workspace, problem.robots[0].radius, relEps);
       datasets::CSpaceDocument doc;

@@ -113,7 +113,7 @@ struct CSpace::Impl {
 };
 
 CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) : impl_(std::make_unique<Impl>()) {
-  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0");
+  if (radius < 0) throw InputError(w.name, "radius", "robot radius must be >= 0");
   if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
   checkWorkspace(w);  // CGAL's preconditions are not input validation
   impl_->radius = radius;
@@ -131,7 +131,15 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   // Each region on its own: the disc in one region never reaches another (they are separated by
   // walls), and the outside of one region contains the others. Regions are disjoint, so their
   // components are simply collected (joining them one by one would cost quadratic time).
+  if (radius == 0) {  // a point robot: C-free is W itself (the command line rejects r = 0)
+    for (const Region& reg : w.regions) {
+      std::vector<CPolygon> holes;
+      for (const Ring& h : reg.holes) holes.push_back(curved(h, false));
+      impl_->parts.emplace_back(curved(reg.outer, true), holes.begin(), holes.end());
+    }
+  }
   for (const Region& reg : w.regions) {
+    if (radius == 0) break;
     // outside of the region: the frame with the region's outer ring as a hole; its offset shrinks
     // the hole by r, which is the region eroded by r
     std::vector<CPolygonWithHoles> cobs;

@@ -120,7 +120,7 @@ std::optional<Point> defaultStart(const CellGrid& cells) {
   return std::nullopt;
 }
 
-PlanningContext makeContext(Problem problem) {
+void checkProblem(const Problem& problem) {
   const std::string& name = problem.workspace.name;
   if (problem.robots.empty()) throw InputError(name, "robots", "no robot");
   if (problem.workspace.regions.empty()) throw InputError(name, "workspace", "empty free space");
@@ -135,6 +135,10 @@ PlanningContext makeContext(Problem problem) {
                        "start is outside the workspace or inside an obstacle of " + name);
   }
   if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", "", "must be > 0");
+}
+
+PlanningContext makeContext(Problem problem) {
+  checkProblem(problem);
   PlanningContext ctx;
   const auto t0 = std::chrono::steady_clock::now();
   ctx.cells = classifyCells(problem.workspace, problem.subCellSize());

@@ -155,7 +155,7 @@ TEST(CSpace, ComponentOfAPointAndBadRadius) {
   const CSpace cs(boxWith({{{4, 0.5}, {6, 0.5}, {6, 9.5}, {4, 9.5}}}), ratio(1, 2));
   EXPECT_EQ(cs.componentCount(), 2u);  // the gaps of 0.5 above and below the wall are below 2r = 1
   EXPECT_NE(cs.componentOf({Rational(2), Rational(5)}), cs.componentOf({Rational(8), Rational(5)}));
-  EXPECT_THROW(CSpace(boxWith({}), Rational(0)), InputError);
+  EXPECT_THROW(CSpace(boxWith({}), Rational(-1)), InputError);
   EXPECT_EQ(cs.componentOf({Rational(5), Rational(5)}), -1);  // inside the obstacle
   EXPECT_EQ(cs.componentOf({Rational(1, 4), Rational(5)}), -1);  // closer than r to the wall
   EXPECT_GE(cs.componentOf({Rational(2), Rational(5)}), 0);
@@ -281,4 +281,16 @@ TEST(CSpace, ArcClearance) {
   EXPECT_FALSE(cs.arcClear({ratio(96, 10), Rational(5)}, {ratio(4, 10), Rational(5)}, {Rational(5), Rational(5)}, false));
   // the end is the ray through `to`: a far point on the same ray gives the same arc
   EXPECT_TRUE(cs.arcClear({Rational(8), Rational(5)}, {Rational(5), Rational(100)}, {Rational(5), Rational(5)}, true));
+}
+
+TEST(CSpace, RadiusZeroGivesTheObstaclesBack) {
+  const Workspace w = boxWith({{{4, 4}, {6, 4}, {5, 6}}, {{1, 1}, {2, 1}, {2, 2}, {1, 2}}});
+  const CSpace cs(w, Rational(0));
+  EXPECT_NEAR(cs.area(), freeArea(w).get_d(), 1e-12);
+  EXPECT_EQ(cs.componentCount(), 1u);
+  double obstacles = 0;
+  for (const CurveRegion& o : cs.obstacles()) obstacles += o.area;
+  EXPECT_NEAR(obstacles, 2 + 1, 1e-12);  // the two holes, nothing else
+  EXPECT_FALSE(cs.contains({Rational(5), Rational(5)}));
+  EXPECT_TRUE(cs.contains({Rational(4), Rational(4)}));  // on an obstacle's boundary: closed C-free
 }

@@ -63,7 +63,9 @@ struct CSpaceCells {
 
 class CSpace {
 public:
-  /// Throws InputError when r <= 0. `relativeEps` scales with the workspace's extent.
+  /// Throws InputError when r < 0 or the workspace is not valid (checkWorkspace). r = 0 (a point)
+  /// gives C-free = W; the command line rejects it, as a robot has a size. `relativeEps` scales with
+  /// the workspace's extent.
   CSpace(const Workspace& w, const Rational& radius, double relativeEps = 1e-6);
   ~CSpace();
   CSpace(CSpace&&) noexcept;

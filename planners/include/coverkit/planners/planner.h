@@ -70,6 +70,9 @@ struct PlanningContext {
   double cellSeconds = 0;              ///< time spent classifying (reported as a phase)
 };
 
+/// Checks robots, radii, starts and cell size against the workspace (InputError on bad input).
+void checkProblem(const Problem& problem);
+
 /// Builds the context: checks the robot and start (InputError), classifies cells once, and fills in
 /// the default start where none was given (see defaultStart).
 PlanningContext makeContext(Problem problem);
