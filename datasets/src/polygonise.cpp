@@ -15,6 +15,22 @@ constexpr int kDx[4] = {1, 0, -1, 0};
 constexpr int kDy[4] = {0, 1, 0, -1};
 }  // namespace
 
+namespace {
+/// Parity test; p must not lie on the ring.
+bool pointInRingStrict(const Ring& r, const Point& p) {
+  bool in = false;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point& a = r[i];
+    const Point& b = r[(i + 1) % r.size()];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const Rational x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (x > p.x) in = !in;
+    }
+  }
+  return in;
+}
+}  // namespace
+
 Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
   const int W = g.width, H = g.height;
   auto freeAt = [&](int c, int r) { return c >= 0 && r >= 0 && c < W && r < H && !g.at(c, r); };
@@ -54,7 +70,7 @@ Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
     }
   Workspace w;
   w.name = name;
-  w.regions.resize(static_cast<std::size_t>(comps));
+  std::vector<std::vector<Ring>> outers(static_cast<std::size_t>(comps)), holes(static_cast<std::size_t>(comps));
   auto pt = [&](int x, int y) { return Point{Rational(g.originX + g.resolution * x), Rational(g.originY + g.resolution * y)}; };
   for (int y = 0; y <= H; ++y)
     for (int x = 0; x <= VW - 1; ++x) {
@@ -65,7 +81,7 @@ Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
         const int pc = d0 == 0 ? x : d0 == 1 ? x - 1 : d0 == 2 ? x - 1 : x;
         const int pr = d0 == 0 ? y : d0 == 1 ? y : d0 == 2 ? y - 1 : y - 1;
         const int comp = label[static_cast<std::size_t>(pr) * W + pc];
-        Ring ring;
+        std::vector<std::pair<int, int>> ring;  // lattice corners
         int cx = x, cy = y, d = d0;
         bool first = true;
         while (true) {
@@ -84,20 +100,56 @@ Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
             }
           }
           first = false;
-          if (next != d) ring.push_back(pt(cx, cy));  // a corner
+          if (next != d) ring.emplace_back(cx, cy);  // a corner
           if (cx == x && cy == y && next == d0) break;
           if (next < 0) throw InputError(name, "grid", "internal error: open boundary");  // cannot happen
           d = next;
         }
-        // rotate so the ring starts at a corner; already only corners
-        const Rational a = signedArea2(ring);
-        Region& reg = w.regions[static_cast<std::size_t>(comp)];
-        if (a > 0) reg.outer = std::move(ring);
-        else reg.holes.push_back(std::move(ring));
+        // A ring that passes a pinch vertex twice is split there into simple loops (rings may then
+        // touch at that vertex, which checkWorkspace and CGAL accept; a self-touching ring is not).
+        std::vector<std::pair<int, int>> stack;
+        std::map<std::pair<int, int>, std::size_t> at;
+        auto emit = [&](std::vector<std::pair<int, int>> loop) {
+          if (loop.size() < 3) return;
+          Ring r;
+          for (auto [lx, ly] : loop) r.push_back(pt(lx, ly));
+          (signedArea2(r) > 0 ? outers : holes)[static_cast<std::size_t>(comp)].push_back(std::move(r));
+        };
+        for (const auto& v : ring) {
+          auto it = at.find(v);
+          if (it == at.end()) {
+            at[v] = stack.size();
+            stack.push_back(v);
+            continue;
+          }
+          std::vector<std::pair<int, int>> loop(stack.begin() + static_cast<long>(it->second), stack.end());
+          for (std::size_t k = it->second + 1; k < stack.size(); ++k) at.erase(stack[k]);
+          stack.resize(it->second + 1);
+          emit(std::move(loop));
+        }
+        emit(std::move(stack));
       }
     }
-  // The start edge's own corner: the loop pushes the vertex at which direction changes, which
-  // includes (x, y) itself when the ring closes with a turn. Nothing else to fix.
+  // Regions: a component with one outer loop keeps all its holes; a component whose outer boundary
+  // was split at pinch vertices becomes several regions, each hole going to the loop around it.
+  for (int c = 0; c < comps; ++c) {
+    auto& os = outers[static_cast<std::size_t>(c)];
+    auto& hs = holes[static_cast<std::size_t>(c)];
+    if (os.size() == 1) {
+      w.regions.push_back({std::move(os[0]), std::move(hs)});
+      continue;
+    }
+    const std::size_t first = w.regions.size();
+    for (Ring& o : os) w.regions.push_back({std::move(o), {}});
+    for (Ring& h : hs) {
+      const Point m{Rational((h[0].x + h[1].x) / 2), Rational((h[0].y + h[1].y) / 2)};
+      for (std::size_t k = first; k < w.regions.size(); ++k)
+        if (pointInRingStrict(w.regions[k].outer, m)) {
+          w.regions[k].holes.push_back(std::move(h));
+          break;
+        }
+    }
+  }
   return w;
 }
 

@@ -174,6 +174,18 @@ TEST(GridPolygons, DiagonalPinchesKeepFreeSpace4Connected) {
   EXPECT_EQ(ring.regions[0].holes[0].size(), 4u);
 }
 
+TEST(GridPolygons, RingsTouchingThemselvesAreSplitAtThePinch) {
+  // two obstacle pixels meeting at a corner inside one free region: two holes touching at a vertex
+  const Workspace w = datasets::parseTextGrid(".....\n.#...\n..#..\n.....\n", "pinch.grid");
+  ASSERT_EQ(w.regions.size(), 1u);
+  EXPECT_EQ(w.regions[0].holes.size(), 2u);
+  EXPECT_NO_THROW(checkWorkspace(w));
+  // an obstacle touching the outside at a corner: the outer ring is not self-touching either
+  const Workspace v = datasets::parseTextGrid("#....\n.#...\n.....\n", "corner.grid");
+  EXPECT_NO_THROW(checkWorkspace(v));
+  EXPECT_EQ(freeArea(v), Rational(13));
+}
+
 TEST(LoadMap, UnknownExtensionAndMissingFile) {
   expectInputError([] { datasets::loadMap(write("x.xyz", "")); }, "unknown map format");
   expectInputError([] { datasets::loadMap((tmpDir() / "nope.map").string()); }, "file not found");
