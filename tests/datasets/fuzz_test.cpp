@@ -4,6 +4,7 @@
 #include "helpers/checkers.h"
 
 #include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
@@ -11,6 +12,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -52,7 +54,7 @@ TEST(Fuzz, MutatedMapsLoadOrAreRejectedCleanly) {
   const fs::path dir = fs::path(COVERKIT_TEST_TMP) / "fuzz";
   fs::create_directories(dir);
   std::mt19937_64 rng(2024);
-  std::size_t loaded = 0, rejected = 0;
+  std::size_t loaded = 0, rejected = 0, planned = 0;
   struct Case {
     std::string file, mutateName;  // the file given to loadMap, and the one that is mutated
   };
@@ -80,7 +82,10 @@ TEST(Fuzz, MutatedMapsLoadOrAreRejectedCleanly) {
         if (r <= 0) continue;
         try {
           const auto ctx = testing_helpers::contextFor(w, r);
+          const CSpace cs(w, r);  // the exact C-space must cope with whatever loaded
+          EXPECT_LE(cs.area(), freeArea(w).get_d() + 1e-9);
           const Plan plan = planners::runPlanner("stc", ctx, {});
+          ++planned;
           if (succeeded(plan.status)) {
             EXPECT_TRUE(testing_helpers::planIsValid(ctx, plan));
           }
@@ -96,6 +101,7 @@ TEST(Fuzz, MutatedMapsLoadOrAreRejectedCleanly) {
     }
     std::ofstream(dir / c.mutateName, std::ios::binary) << original;
   }
+  std::cout << "fuzz: " << loaded << " loaded, " << rejected << " rejected, " << planned << " planned\n";
   EXPECT_GT(loaded, 50u);
   EXPECT_GT(rejected, 50u);
 }
