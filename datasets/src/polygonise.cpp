@@ -15,21 +15,6 @@ constexpr int kDx[4] = {1, 0, -1, 0};
 constexpr int kDy[4] = {0, 1, 0, -1};
 }  // namespace
 
-namespace {
-/// Parity test; p must not lie on the ring.
-bool pointInRingStrict(const Ring& r, const Point& p) {
-  bool in = false;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const Point& a = r[i];
-    const Point& b = r[(i + 1) % r.size()];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const Rational x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x > p.x) in = !in;
-    }
-  }
-  return in;
-}
-}  // namespace
 
 Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
   const int W = g.width, H = g.height;
@@ -144,7 +129,7 @@ Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
     for (Ring& h : hs) {
       const Point m{Rational((h[0].x + h[1].x) / 2), Rational((h[0].y + h[1].y) / 2)};
       for (std::size_t k = first; k < w.regions.size(); ++k)
-        if (pointInRingStrict(w.regions[k].outer, m)) {
+        if (insideRing(w.regions[k].outer, m)) {
           w.regions[k].holes.push_back(std::move(h));
           break;
         }

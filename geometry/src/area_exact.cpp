@@ -21,16 +21,15 @@ namespace coverkit {
 
 namespace {
 
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
-using Traits = CGAL::Gps_circle_segment_traits_2<K>;
-using PolygonSet = CGAL::General_polygon_set_2<Traits>;
-using Polygon = Traits::General_polygon_2;
-using PolygonWithHoles = Traits::General_polygon_with_holes_2;
+using detail::ft;
+using detail::K;
+using detail::PolygonSet;
+using detail::Traits;
+using Polygon = detail::CPolygon;
+using PolygonWithHoles = detail::CPolygonWithHoles;
 using Curve = Traits::Curve_2;
 using XCurve = Traits::X_monotone_curve_2;
 using KPoint = K::Point_2;
-
-K::FT ft(const Rational& q) { return K::FT(K::FT::ET(q.get_mpq_t())); }
 Traits::Point_2 opt(const KPoint& p) { return Traits::Point_2(p.x(), p.y()); }
 KPoint kpt(const Rational& x, const Rational& y) { return KPoint(ft(x), ft(y)); }
 

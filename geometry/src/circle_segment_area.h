@@ -3,11 +3,22 @@
 // coverkit's double curves. Used by area_exact.cpp and cspace.cpp (both include CGAL already).
 #include <coverkit/geometry/path.h>
 
-#include <CGAL/number_utils.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/General_polygon_set_2.h>
+#include <CGAL/Gps_circle_segment_traits_2.h>
 
 #include <cmath>
 
 namespace coverkit::detail {
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using Traits = CGAL::Gps_circle_segment_traits_2<K>;
+using PolygonSet = CGAL::General_polygon_set_2<Traits>;
+using CPolygon = Traits::General_polygon_2;
+using CPolygonWithHoles = Traits::General_polygon_with_holes_2;
+
+/// A coverkit rational as the kernel's exact number (no rounding).
+inline K::FT ft(const Rational& q) { return K::FT(K::FT::ET(q.get_mpq_t())); }
 
 /// Twice the signed area contribution of one x-monotone curve (Green's theorem).
 template <class XCurve>

@@ -20,15 +20,14 @@ namespace coverkit {
 
 namespace {
 
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
-using Traits = CGAL::Gps_circle_segment_traits_2<K>;
-using PolygonSet = CGAL::General_polygon_set_2<Traits>;
-using CPolygonWithHoles = Traits::General_polygon_with_holes_2;
-using CPolygon = Traits::General_polygon_2;
+using detail::CPolygon;
+using detail::CPolygonWithHoles;
+using detail::ft;
+using detail::K;
+using detail::PolygonSet;
+using detail::Traits;
 using LinearPolygon = CGAL::Polygon_2<K>;
 using LinearPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
-
-K::FT ft(const Rational& q) { return K::FT(K::FT::ET(q.get_mpq_t())); }
 
 LinearPolygon linear(const Ring& ring, bool ccw) {
   LinearPolygon p;

@@ -40,6 +40,19 @@ std::size_t Workspace::vertexCount() const {
   return n;
 }
 
+bool insideRing(const Ring& r, const Point& p) {
+  bool in = false;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point& a = r[i];
+    const Point& b = r[(i + 1) % r.size()];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const Rational x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (x > p.x) in = !in;
+    }
+  }
+  return in;
+}
+
 Rational signedArea2(const Ring& ring) {
   Rational a = 0;
   const std::size_t n = ring.size();

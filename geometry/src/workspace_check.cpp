@@ -55,18 +55,6 @@ std::string where(std::size_t region, int hole, std::size_t vertex) {
   return os.str();
 }
 
-bool pointInRing(const Ring& r, const Point& p) {
-  bool in = false;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const Point& a = r[i];
-    const Point& b = r[(i + 1) % r.size()];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const Rational x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x > p.x) in = !in;
-    }
-  }
-  return in;
-}
 
 }  // namespace
 
@@ -138,16 +126,16 @@ void checkWorkspace(const Workspace& w) {
     for (std::size_t h = 0; h < reg.holes.size(); ++h) {
       // the midpoint of an edge is on no other ring (rings meet only at vertices)
       const Point m{Rational((reg.holes[h][0].x + reg.holes[h][1].x) / 2), Rational((reg.holes[h][0].y + reg.holes[h][1].y) / 2)};
-      if (!pointInRing(reg.outer, m)) throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
+      if (!insideRing(reg.outer, m)) throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
       for (std::size_t h2 = 0; h2 < reg.holes.size(); ++h2)
-        if (h2 != h && pointInRing(reg.holes[h2], m))
+        if (h2 != h && insideRing(reg.holes[h2], m))
           throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole lies inside hole " + std::to_string(h2 + 1));
     }
     const Point m{Rational((reg.outer[0].x + reg.outer[1].x) / 2), Rational((reg.outer[0].y + reg.outer[1].y) / 2)};
     for (std::size_t rj = 0; rj < w.regions.size(); ++rj) {
-      if (rj == ri || !pointInRing(w.regions[rj].outer, m)) continue;
+      if (rj == ri || !insideRing(w.regions[rj].outer, m)) continue;
       bool inHole = false;
-      for (const Ring& h : w.regions[rj].holes) inHole = inHole || pointInRing(h, m);
+      for (const Ring& h : w.regions[rj].holes) inHole = inHole || insideRing(h, m);
       if (!inHole) throw InputError(w.name, where(ri, -1, 0), "polygon overlaps polygon " + std::to_string(rj + 1));
     }
   }

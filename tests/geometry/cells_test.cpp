@@ -1,6 +1,8 @@
 // Exact cell classification against a brute-force reference (every cell against every edge).
 #include <coverkit/geometry/cell_grid.h>
 
+#include "helpers/worlds.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -9,16 +11,6 @@ using namespace coverkit;
 
 namespace {
 
-Workspace boxWithHoles(const std::vector<Ring>& holes, int w = 10, int h = 10) {
-  Workspace ws;
-  ws.name = "test";
-  Region r;
-  r.outer = {{0, 0}, {w, 0}, {w, h}, {0, h}};
-  r.holes = holes;
-  ws.regions.push_back(r);
-  normalise(ws);
-  return ws;
-}
 
 /// Does the closed segment meet the open square (x0,x1)×(y0,y1)? Liang–Barsky clipping, exact.
 bool meetsOpenSquare(const Point& a, const Point& b, const Rational& x0, const Rational& y0, const Rational& x1, const Rational& y1) {
@@ -47,7 +39,7 @@ CellState reference(const Workspace& w, const CellGrid& g, int c, int r) {
 }  // namespace
 
 TEST(Cells, SquareHoleOnTheGrid) {
-  const Workspace w = boxWithHoles({{{2, 2}, {2, 4}, {4, 4}, {4, 2}}});
+  const Workspace w = testing_helpers::boxWith({{{2, 2}, {2, 4}, {4, 4}, {4, 2}}});
   const CellGrid g = classifyCells(w, Rational(1));
   EXPECT_EQ(g.subCols(), 10);
   EXPECT_EQ(g.subRows(), 10);
@@ -59,7 +51,7 @@ TEST(Cells, SquareHoleOnTheGrid) {
 }
 
 TEST(Cells, GridIsExtendedToWholeMegaCellsAndOutsideIsBlocked) {
-  const Workspace w = boxWithHoles({}, 5, 3);
+  const Workspace w = testing_helpers::boxWith({}, 5, 3);
   const CellGrid g = classifyCells(w, Rational(1));
   EXPECT_EQ(g.megaCols(), 3);
   EXPECT_EQ(g.megaRows(), 2);
@@ -77,7 +69,7 @@ TEST(Cells, MatchesBruteForceOnRandomPolygons) {
       const Rational s = ratio(1 + static_cast<long>(rng() % 7), 8);
       holes.push_back({{Rational(cx) - s, Rational(cy)}, {Rational(cx), Rational(cy) - s}, {Rational(cx) + s, Rational(cy) + s / 3}});
     }
-    const Workspace w = boxWithHoles(holes);
+    const Workspace w = testing_helpers::boxWith(holes);
     const Rational D = ratio(3 + static_cast<long>(rng() % 5), 7);
     const CellGrid g = classifyCells(w, D);
     for (int r = 0; r < g.subRows(); ++r)
@@ -85,4 +77,4 @@ TEST(Cells, MatchesBruteForceOnRandomPolygons) {
   }
 }
 
-TEST(Cells, RejectsNonPositiveSize) { EXPECT_ANY_THROW(classifyCells(boxWithHoles({}), Rational(0))); }
+TEST(Cells, RejectsNonPositiveSize) { EXPECT_ANY_THROW(classifyCells(testing_helpers::boxWith({}), Rational(0))); }

@@ -4,6 +4,8 @@
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/validate.h>
 
+#include "helpers/worlds.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,17 +13,7 @@
 
 using namespace coverkit;
 
-namespace {
-Workspace boxWith(const std::vector<Ring>& holes, int w = 10, int h = 10) {
-  Workspace ws;
-  Region r;
-  r.outer = {{0, 0}, {w, 0}, {w, h}, {0, h}};
-  r.holes = holes;
-  ws.regions.push_back(r);
-  normalise(ws);
-  return ws;
-}
-}  // namespace
+using testing_helpers::boxWith;
 
 TEST(CSpace, ConvexObstacleAreaIsAPlusPerimeterRPlusPiR2) {
   // a triangle with irrational edge normals, far from the walls; eps tiny so the bound holds at 1e-12

@@ -43,6 +43,9 @@ struct Workspace {
   std::size_t vertexCount() const;
 };
 
+/// Exact parity test: p strictly inside the ring. p must not lie on the ring (callers pick points
+/// that cannot, such as an edge midpoint of a ring that only touches others at vertices).
+bool insideRing(const Ring& ring, const Point& p);
 /// Exact twice-signed area of a ring (counter-clockwise positive).
 Rational signedArea2(const Ring& ring);
 /// Exact area of the free space of a workspace.
