@@ -35,6 +35,8 @@ printf 'POLYGON((0 0, 10 0, 10 10, 0 10, 0 0),(20 20, 21 20, 21 21, 20 20))' > "
 printf 'POLYGON((0 0, NaN 0, 10 10, 0 10, 0 0))' > "$T/nan.wkt"
 printf '{"type":"Polygon","coordinates":[[[0,0],[1e999,0],[1,1],[0,0]]]}' > "$T/inf.geojson"
 printf '####\n####\n' > "$T/full.grid"
+printf 'POLYGON((0 0, 10 0, 10 0, 10 10, 0 10, 0 0))' > "$T/dup.wkt"
+printf 'POLYGON((0 0, 5 0, 10 0, 0 0))' > "$T/flat.wkt"
 printf 'POLYGON((0 0, 10 0, 10 10, 0 10, 0 0),(4 4, 6 4, 6 6, 4 6, 4 4))' > "$T/room.wkt"
 
 expect_bad "missing map" "nothere.map: file not found" $(plan) "$T/nothere.map"
@@ -95,6 +97,8 @@ expect_bad "cspace bad format" "unknown output format" cspace --map "$T/room.wkt
 expect_bad "cspace hole outside" "hole is outside its outer ring" cspace --map "$T/holeout.wkt" --radius 0.25 --out "$T/out.json"
 expect_bad "cspace NaN" "not finite" cspace --map "$T/nan.wkt" --radius 0.25 --out "$T/out.json"
 expect_bad "cspace radius too large" "robot is larger than the workspace" cspace --map "$T/room.wkt" --radius 8 --out "$T/out.json"
+expect_bad "cspace duplicate vertex" "repeated vertex" cspace --map "$T/dup.wkt" --radius 0.25 --out "$T/out.json"
+expect_bad "cspace degenerate ring" "zero area" cspace --map "$T/flat.wkt" --radius 0.25 --out "$T/out.json"
 expect_bad "cspace self-intersecting" "self-intersecting ring" cspace --map "$T/bowtie.wkt" --radius 0.25 --out "$T/out.json"
 "$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/good.json" --cspace --json | grep -q '"valid": true' && ok || bad "evaluate --cspace on a valid STC path"
 # a path that cuts through the obstacle is reported invalid (exit 1), with the segment
