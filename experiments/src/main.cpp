@@ -155,9 +155,23 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
      << "| map | planner | status | valid | sub-cell coverage | area coverage | coverable coverage | length | turns | time (s) |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   int invalid = 0;
+  std::ostringstream cspaceMd;
   for (const Scenario& s : scenarios) {
     const Problem problem = makeProblem((data / s.file).string(), s.radius, "", false, "");
     const planners::PlanningContext ctx = planners::makeContext(problem);
+    {  // the scenario's C-space: what the robot's centre may reach, and what it cannot
+      const CSpace cs(ctx.problem.workspace, ctx.problem.robots[0].radius);
+      const std::vector<CurveRegion> cfree = cs.components(), cobs = cs.obstacles();
+      experiments::PictureContent pc;
+      pc.workspace = &ctx.problem.workspace;
+      pc.cfree = &cfree;
+      pc.cobstacles = &cobs;
+      pc.title = s.name + " / C-space, r=" + s.radius + " / " + std::to_string(cfree.size()) + " component(s)";
+      experiments::renderPicture((fs::path(outDir) / (s.name + "_cspace.png")).string(), pc);
+      cspaceMd << "### " << s.name << " — C-space\n\nC-free: " << cfree.size() << " component(s), area " << formatDouble(std::round(cs.area() * 1000) / 1000)
+                << " of free area " << formatDouble(std::round(freeArea(ctx.problem.workspace).get_d() * 1000) / 1000) << ".\n\n![" << s.name
+                << " C-space](" << s.name << "_cspace.png)\n\n";
+    }
     for (const std::string& planner : names) {
       experiments::RunResult r = experiments::runOnce(ctx, planner, {});
       progress.step(s.name + " " + planner);
@@ -192,6 +206,9 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
   md << "\n## Pictures\n\nGreen: free sub-cells; orange: partial; dark: obstacles; blue: spanning tree; red: path (faint band: the swept disc).\n\n";
   for (const Scenario& s : scenarios)
     for (const std::string& planner : names) md << "### " << s.name << " — " << planner << "\n\n![" << s.name << "](" << s.name << "_" << planner << ".png)\n\n";
+  md << "## C-space\n\nBlue: C-free components (where the disc's centre may be; arcs drawn as arcs); red: C-obstacles "
+        "(obstacles ⊕ disc and the band along the walls).\n\n"
+     << cspaceMd.str();
   md << "Columns are defined in docs/metrics.md; results.csv holds every metric and per-phase time.\n";
   datasets::writeFileAtomically((fs::path(outDir) / "results.csv").string(), csv.str());
   datasets::writeFileAtomically((fs::path(outDir) / "report.md").string(), md.str());
