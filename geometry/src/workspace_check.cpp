@@ -120,20 +120,42 @@ void checkWorkspace(const Workspace& w) {
     }
     active.push_back(order[oi]);
   }
-  // Holes inside their outer ring, not inside another hole; polygons not inside each other.
+  // Holes inside their outer ring, not inside another hole; polygons not inside each other. Rings
+  // do not cross (checked above), so one point per ring decides; double bounding boxes (with a
+  // margin) skip the rings that cannot contain it.
+  struct BoxD {
+    double x0, y0, x1, y1;
+    bool may(const Point& p) const {
+      const double x = p.x.get_d(), y = p.y.get_d(), e = 1e-9 * (1 + std::abs(x) + std::abs(y));
+      return x >= x0 - e && x <= x1 + e && y >= y0 - e && y <= y1 + e;
+    }
+  };
+  auto boxOf = [](const Ring& r) {
+    BoxD b{1e300, 1e300, -1e300, -1e300};
+    for (const Point& p : r) {
+      const double x = p.x.get_d(), y = p.y.get_d();
+      b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
+    }
+    return b;
+  };
+  std::vector<BoxD> outerBox;
+  for (const Region& reg : w.regions) outerBox.push_back(boxOf(reg.outer));
   for (std::size_t ri = 0; ri < w.regions.size(); ++ri) {
     const Region& reg = w.regions[ri];
+    std::vector<BoxD> holeBox;
+    for (const Ring& h : reg.holes) holeBox.push_back(boxOf(h));
     for (std::size_t h = 0; h < reg.holes.size(); ++h) {
       // the midpoint of an edge is on no other ring (rings meet only at vertices)
       const Point m{Rational((reg.holes[h][0].x + reg.holes[h][1].x) / 2), Rational((reg.holes[h][0].y + reg.holes[h][1].y) / 2)};
-      if (!insideRing(reg.outer, m)) throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
+      if (!outerBox[ri].may(m) || !insideRing(reg.outer, m))
+        throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
       for (std::size_t h2 = 0; h2 < reg.holes.size(); ++h2)
-        if (h2 != h && insideRing(reg.holes[h2], m))
+        if (h2 != h && holeBox[h2].may(m) && insideRing(reg.holes[h2], m))
           throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole lies inside hole " + std::to_string(h2 + 1));
     }
     const Point m{Rational((reg.outer[0].x + reg.outer[1].x) / 2), Rational((reg.outer[0].y + reg.outer[1].y) / 2)};
     for (std::size_t rj = 0; rj < w.regions.size(); ++rj) {
-      if (rj == ri || !insideRing(w.regions[rj].outer, m)) continue;
+      if (rj == ri || !outerBox[rj].may(m) || !insideRing(w.regions[rj].outer, m)) continue;
       bool inHole = false;
       for (const Ring& h : w.regions[rj].holes) inHole = inHole || insideRing(h, m);
       if (!inHole) throw InputError(w.name, where(ri, -1, 0), "polygon overlaps polygon " + std::to_string(rj + 1));
