@@ -133,9 +133,9 @@ bool parseTreeStrategy(const std::string& text, TreeStrategy& out) {
 
 std::vector<std::string> treeStrategyNames() { return {"dfs_ccw", "bfs", "kruskal_straight"}; }
 
-SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s) {
+SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s, int rootFirst) {
   switch (s) {
-    case TreeStrategy::kDfsCcw: return dfsCcwTree(g, root);
+    case TreeStrategy::kDfsCcw: return dfsCcwTree(g, root, rootFirst);
     // Plain arrays on the hot path: Boost.Graph stayed over 2x slower (docs/performance.md); the
     // Boost.Graph versions give the same trees (tests/graph) and stay in the benchmark.
     case TreeStrategy::kBfs: return bfsTreePlain(g, root);
@@ -144,7 +144,7 @@ SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s) {
   return dfsCcwTree(g, root);
 }
 
-SpanningTree dfsCcwTree(const GridGraph& g, int root) {
+SpanningTree dfsCcwTree(const GridGraph& g, int root, int rootFirst) {
   SpanningTree t = emptyTree(g, root);
   if (!validRoot(g, root)) return t;
   t.nodes = 1;
@@ -153,7 +153,7 @@ SpanningTree dfsCcwTree(const GridGraph& g, int root) {
   };
   std::vector<std::uint8_t> seen(g.size(), 0);
   seen[static_cast<std::size_t>(root)] = 1;
-  std::vector<Frame> stack{{root, kEast, 0}};
+  std::vector<Frame> stack{{root, rootFirst & 3, 0}};
   while (!stack.empty()) {
     Frame& f = stack.back();
     if (f.k == 4) {

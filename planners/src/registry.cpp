@@ -11,6 +11,7 @@ Registry& Registry::instance() {
     Registry r;
     // One line per built-in planner.
     r.add("stc", [] { return std::make_unique<StcPlanner>(); });
+    r.add("spiral_stc", [] { return std::make_unique<SpiralStcPlanner>(); });
     return r;
   }();
   return registry;

@@ -13,6 +13,7 @@
 //  - The tour returns to the start sub-cell and then to the start point.
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/validate.h>
+#include <coverkit/planners/sensor.h>
 #include <coverkit/planners/stc_skeleton.h>
 
 #include <chrono>
@@ -44,20 +45,25 @@ graph::GridGraph StcSkeleton::buildGraph(const PlanningContext& ctx) const {
   return g;
 }
 
-graph::SpanningTree StcSkeleton::growTree(const graph::GridGraph& g, int root, const ParamSet& params) const {
+graph::SpanningTree StcSkeleton::growTree(const graph::GridGraph& g, int root, const ParamSet& params, int rootFirst) const {
   graph::TreeStrategy s = graph::TreeStrategy::kDfsCcw;
   graph::parseTreeStrategy(params.text("tree"), s);
-  return graph::buildTree(g, root, s);
+  return graph::buildTree(g, root, s, rootFirst);
 }
 
-std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, const graph::SpanningTree& tree, CellIndex start) const {
+namespace {
+int quadrantOf(CellIndex c) { return (c.row % 2 == 0) ? (c.col % 2 == 0 ? 0 : 1) : (c.col % 2 == 0 ? 3 : 2); }
+}  // namespace
+
+std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, const graph::GridGraph&, graph::SpanningTree& tree,
+                                                   CellIndex start, Plan&) const {
   // Quadrants counter-clockwise: 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left.
   // From quadrant q the robot moves in direction q (E, N, W, S) to quadrant q+1 of the same
   // mega-cell, unless the tree has an edge on the arm it would cross (direction q+3): then it moves
   // in that direction into the neighbour, arriving in quadrant q+3.
   const int mcols = ctx.cells.megaCols();
   int mc = start.col / 2, mr = start.row / 2;
-  int q = (start.row % 2 == 0) ? (start.col % 2 == 0 ? 0 : 1) : (start.col % 2 == 0 ? 3 : 2);
+  int q = quadrantOf(start);
   const int q0 = q, mc0 = mc, mr0 = mr;
   auto sub = [](int c, int r, int quad) { return CellIndex{2 * c + (quad == 1 || quad == 2), 2 * r + (quad >= 2)}; };
   std::vector<CellIndex> walk{sub(mc, mr, q)};
@@ -110,8 +116,11 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
     return plan;
   }
   t = Clock::now();
-  const graph::SpanningTree tree = growTree(g, g.id(s.col / 2, s.row / 2), params);
+  graph::SpanningTree tree = growTree(g, g.id(s.col / 2, s.row / 2), params, (quadrantOf(s) + 3) & 3);
   plan.timings.emplace_back("tree", since(t));
+
+  t = Clock::now();
+  const std::vector<CellIndex> walk = circumnavigate(ctx, g, tree, s, plan);
   plan.statistics["tree_nodes"] = static_cast<double>(tree.nodes);
   // Waypoint coordinates depend on the column or the row alone: computed once, exactly, per column
   // and per row (sub-cell centres rounded towards their mega-cell's centre), so the walk is O(1) a step.
@@ -135,8 +144,6 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
                               {megaX[static_cast<std::size_t>(g.col(v))], megaY[static_cast<std::size_t>(g.row(v))]}});
   }
 
-  t = Clock::now();
-  const std::vector<CellIndex> walk = circumnavigate(ctx, tree, s);
   // waypoints, rounded towards their mega-cell's centre
   auto waypoint = [&](CellIndex c) { return PointD{subX[static_cast<std::size_t>(c.col)], subY[static_cast<std::size_t>(c.row)]}; };
   std::vector<PointD> pts;
@@ -172,6 +179,68 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
   plan.status = PlanStatus::kExactSolution;
   plan.message = "covered every sub-cell of the start's component of free mega-cells";
   return plan;
+}
+
+std::string SpiralStcPlanner::description() const {
+  return "Spiral-STC (Gabriely & Rimon 2001), online: senses the four neighbours of its mega-cell, grows the tree "
+         "counter-clockwise as it goes, covers every sub-cell of the reachable free mega-cells";
+}
+
+Capabilities SpiralStcPlanner::capabilities() const {
+  Capabilities c;
+  c.online = true;
+  return c;
+}
+
+graph::SpanningTree SpiralStcPlanner::growTree(const graph::GridGraph& g, int root, const ParamSet&, int) const {
+  graph::SpanningTree t;  // the robot knows only where it starts
+  t.root = root;
+  t.parent.assign(g.size(), -1);
+  t.edges.assign(g.size(), 0);
+  t.nodes = 1;
+  return t;
+}
+
+std::vector<CellIndex> SpiralStcPlanner::circumnavigate(const PlanningContext&, const graph::GridGraph& world, graph::SpanningTree& tree,
+                                                        CellIndex start, Plan& plan) const {
+  // The walk of the offline skeleton, with each tree edge decided when the robot first reaches
+  // the arm it would cross: a known edge (to the parent) is crossed back; otherwise the sensor is
+  // asked about the neighbour across the arm, and a new free one becomes a child.
+  MegaCellSensor sensor(world, tree.root);
+  const int cols = world.cols;
+  std::vector<std::uint8_t> visited(world.size(), 0);
+  visited[static_cast<std::size_t>(tree.root)] = 1;
+  int mc = start.col / 2, mr = start.row / 2;
+  int q = quadrantOf(start);
+  const int q0 = q, mc0 = mc, mr0 = mr;
+  auto sub = [](int c, int r, int quad) { return CellIndex{2 * c + (quad == 1 || quad == 2), 2 * r + (quad >= 2)}; };
+  std::vector<CellIndex> walk{sub(mc, mr, q)};
+  do {
+    const int here = mr * cols + mc, arm = (q + 3) & 3;
+    bool cross = tree.edges[static_cast<std::size_t>(here)] >> arm & 1;
+    if (!cross && sensor.neighbourFree(here, arm)) {
+      const int there = (mr + graph::kDy[arm]) * cols + mc + graph::kDx[arm];
+      if (!visited[static_cast<std::size_t>(there)]) {
+        visited[static_cast<std::size_t>(there)] = 1;
+        tree.parent[static_cast<std::size_t>(there)] = here;
+        tree.edges[static_cast<std::size_t>(here)] |= static_cast<std::uint8_t>(1u << arm);
+        tree.edges[static_cast<std::size_t>(there)] |= static_cast<std::uint8_t>(1u << graph::opposite(arm));
+        ++tree.nodes;
+        cross = true;
+      }
+    }
+    if (cross) {
+      mc += graph::kDx[arm];
+      mr += graph::kDy[arm];
+      q = arm;
+      sensor.moveTo(mr * cols + mc);
+    } else {
+      q = (q + 1) & 3;
+    }
+    walk.push_back(sub(mc, mr, q));
+  } while (!(q == q0 && mc == mc0 && mr == mr0));
+  plan.statistics["sensor_queries"] = static_cast<double>(sensor.log().size());
+  return walk;
 }
 
 }  // namespace coverkit::planners

@@ -2,7 +2,9 @@
 // Spanning trees of the mega-cell graph (the STC family's trees).
 //
 //  - dfs_ccw: depth-first, neighbours scanned counter-clockwise starting after the parent
-//    (Gabriely & Rimon's Spiral-STC order; the root scans E, N, W, S as if its parent were south).
+//    (Gabriely & Rimon's Spiral-STC order); the root scans from a given direction (E by default;
+//    the STC planners pass the arm their walk meets first, so that offline STC and online
+//    Spiral-STC give the same tree).
 //    BGL's depth_first_search visits out-edges in a fixed stored order, which cannot express a
 //    parent-relative order, so this one is plain arrays (O(V)).
 //  - bfs: breadth-first, neighbours E, N, W, S.
@@ -37,9 +39,11 @@ bool parseTreeStrategy(const std::string& text, TreeStrategy& out);
 std::vector<std::string> treeStrategyNames();
 
 /// The tree of `root`'s component with the given strategy (the fast implementation of each).
-SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s);
+/// `rootFirst`: the direction the root scans first (dfs_ccw only; the others ignore it).
+SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s, int rootFirst = kEast);
 
-SpanningTree dfsCcwTree(const GridGraph& g, int root);
+/// Counter-clockwise DFS; the root scans from `rootFirst` on (E, N, W, S after it, cyclically).
+SpanningTree dfsCcwTree(const GridGraph& g, int root, int rootFirst = kEast);
 SpanningTree bfsTreeBgl(const GridGraph& g, int root);
 SpanningTree bfsTreePlain(const GridGraph& g, int root);
 SpanningTree kruskalTreeBgl(const GridGraph& g, int root);
