@@ -27,3 +27,19 @@ static void BM_Stc(benchmark::State& state) {
   state.SetComplexityN(static_cast<long>(side) * side);
 }
 BENCHMARK(BM_Stc)->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {0, 1}})->Unit(benchmark::kMillisecond);
+
+static void BM_SpiralStc(benchmark::State& state) {
+  const int side = static_cast<int>(std::sqrt(static_cast<double>(state.range(0))));
+  datasets::GridMapSpec spec;
+  spec.width = spec.height = side;
+  spec.density = 0.05;
+  spec.clustered = true;
+  spec.seed = 5;
+  Problem p;
+  p.workspace = datasets::gridToWorkspace(datasets::generateGridMap(spec), "bench");
+  p.robots.push_back({Rational(1, 2), std::nullopt});
+  const planners::PlanningContext ctx = planners::makeContext(p);
+  for (auto _ : state) benchmark::DoNotOptimize(planners::runPlanner("spiral_stc", ctx, {}));
+  state.counters["subcells"] = static_cast<double>(side) * side;
+}
+BENCHMARK(BM_SpiralStc)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
