@@ -437,7 +437,18 @@ Workspace parseGeoJson(const std::string& text, const std::string& name) {
   }
   // Frame: longitude/latitude (RFC 7946) when every position is a valid WGS84 position and the extent
   // is below half a degree; otherwise the numbers are taken as metric coordinates as they are.
-  const bool lonlat = xmin >= -180 && xmax <= 180 && ymin >= -90 && ymax <= 90 && (xmax - xmin) < 0.5 && (ymax - ymin) < 0.5;
+  // A "crs" member (GeoJSON 2008) decides when present: CRS84 / EPSG:4326 are longitude/latitude,
+  // any other named CRS is taken as metric coordinates.
+  int crsSaysLonLat = -1;
+  if (j.is_object() && j.contains("crs") && j["crs"].is_object()) {
+    const std::string crs = j["crs"].dump();
+    crsSaysLonLat = (crs.find("CRS84") != std::string::npos || crs.find("4326") != std::string::npos) ? 1 : 0;
+  }
+  const bool inRange = xmin >= -180 && xmax <= 180 && ymin >= -90 && ymax <= 90;
+  const bool lonlat = crsSaysLonLat == 1 ? inRange
+                      : crsSaysLonLat == 0 ? false
+                                           : inRange && (xmax - xmin) < 0.5 && (ymax - ymin) < 0.5;
+  if (crsSaysLonLat == 1 && !inRange) throw InputError(name, "crs", "longitude/latitude CRS but positions out of range");
   const double lon0 = (xmin + xmax) / 2, lat0 = (ymin + ymax) / 2;
   constexpr double kEarth = 6371008.8;  // mean Earth radius (m)
   Workspace w;

@@ -142,6 +142,11 @@ TEST(GeoJson, MetricAndLonLat) {
   const Box b = ll.bbox();
   EXPECT_NEAR(Rational(b.xmax - b.xmin).get_d(), 6371008.8 * std::cos(60.0005 * M_PI / 180) * 0.001 * M_PI / 180, 0.002);
   EXPECT_NEAR(Rational(b.ymax - b.ymin).get_d(), 6371008.8 * 0.001 * M_PI / 180, 0.002);
+  // a named metric CRS keeps small numbers as metres; a lon/lat CRS projects even a wide extent
+  const Workspace metric = datasets::parseGeoJson(
+      R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::3857"}},"features":[{"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[10,60],[10.001,60],[10.001,60.001],[10,60.001],[10,60]]]}}]})",
+      "m.geojson");
+  EXPECT_NEAR(Rational(metric.bbox().xmax - metric.bbox().xmin).get_d(), 0.001, 1e-12);
   expectInputError([] { datasets::parseGeoJson("{\"type\": \"Polygon\", ", "b.geojson"); }, "GeoJSON does not parse");
   expectInputError([] { datasets::parseGeoJson(R"({"type":"Point","coordinates":[1,2]})", "b.geojson"); }, "unsupported geometry");
   expectInputError([] { datasets::parseGeoJson(R"({"type":"Polygon","coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]})", "b.geojson"); }, "self-intersecting");
