@@ -159,8 +159,11 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
   for (const Scenario& s : scenarios) {
     const Problem problem = makeProblem((data / s.file).string(), s.radius, "", false, "");
     const planners::PlanningContext ctx = planners::makeContext(problem);
-    {  // the scenario's C-space: what the robot's centre may reach, and what it cannot
-      const CSpace cs(ctx.problem.workspace, ctx.problem.robots[0].radius);
+    // the scenario's C-space, built once: the picture, and the coverable region of every plan
+    const CSpace cs(ctx.problem.workspace, ctx.problem.robots[0].radius);
+    MetricOptions metricOptions = experiments::defaultMetricOptions();
+    metricOptions.cspace = &cs;
+    {
       const std::vector<CurveRegion> cfree = cs.components(), cobs = cs.obstacles();
       experiments::PictureContent pc;
       pc.workspace = &ctx.problem.workspace;
@@ -173,7 +176,7 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
                 << " C-space](" << s.name << "_cspace.png)\n\n";
     }
     for (const std::string& planner : names) {
-      experiments::RunResult r = experiments::runOnce(ctx, planner, {});
+      experiments::RunResult r = experiments::runOnce(ctx, planner, {}, 0, {}, metricOptions);
       progress.step(s.name + " " + planner);
       if (!r.validation.valid) ++invalid;
       std::map<std::string, double> t;
@@ -396,7 +399,10 @@ int main(int argc, char** argv) {
         vo.cspace = &*evalSpace;
       }
       const ValidationReport v = validatePaths(ctx.problem, doc.paths, vo);
-      const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, experiments::defaultMetricOptions());
+      MetricOptions mo = experiments::defaultMetricOptions();
+      mo.cspace = evalSpace ? &*evalSpace : nullptr;
+      mo.pathsKnownClear = v.valid;
+      const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, mo);
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);
       return v.valid ? 0 : 1;

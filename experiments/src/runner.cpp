@@ -21,7 +21,9 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
     phase("validating");
     r.validation = validatePaths(ctx.problem, r.plan.paths);
     phase("metrics");
-    r.metrics = computeMetrics(ctx.problem, ctx.cells, r.plan.paths, metricOptions);
+    MetricOptions mo = metricOptions;
+    mo.pathsKnownClear = r.validation.valid;  // valid implies continuous and clear
+    r.metrics = computeMetrics(ctx.problem, ctx.cells, r.plan.paths, mo);
   } else {
     r.validation.valid = false;
     r.validation.violations.push_back({"status", 0, -1, std::string(toString(r.plan.status)) + ": " + r.plan.message});

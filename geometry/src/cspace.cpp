@@ -83,8 +83,8 @@ CurveRegion regionOf(const CPolygonWithHoles& pwh) {
 struct CSpace::Impl {
   Rational radius;
   double eps = 0;
-  std::vector<Ring> outers;                  ///< the regions' outer rings (for obstacles())
-  Workspace workspace;                       ///< kept for coverableArea
+  Workspace workspace;                       ///< kept for obstacles() and coverableArea()
+  double relativeEps = 1e-6;
   /// C-free as one set, kept alive for zone walks over its arrangement (built on first use; the
   /// arrangement refers to the set's traits, so the set itself is kept, not a copy).
   std::unique_ptr<PolygonSet> zoneSet;
@@ -105,7 +105,6 @@ struct CSpace::Impl {
         if (!(*f)->contained()) return false;
     return true;
   }
-  double relativeEps = 1e-6;
   std::vector<CPolygonWithHoles> parts;      ///< components of C-free, largest first
   std::vector<PolygonSet> partSets;          ///< one set per component, for point location
   std::vector<double> areas;
@@ -118,7 +117,6 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   impl_->radius = radius;
   impl_->workspace = w;
   impl_->relativeEps = relativeEps;
-  for (const Region& reg : w.regions) impl_->outers.push_back(reg.outer);
   const Box b = w.bbox();
   const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
   impl_->eps = relativeEps * std::max(extent, 1e-12);
@@ -202,7 +200,7 @@ std::vector<CurveRegion> CSpace::components() const {
 std::vector<CurveRegion> CSpace::obstacles() const {
   // W's outer boundaries minus C-free; computed on demand (pictures and files only)
   std::vector<CPolygonWithHoles> outers;
-  for (const Ring& o : impl_->outers) outers.emplace_back(curved(o, true));
+  for (const Region& reg : impl_->workspace.regions) outers.emplace_back(curved(reg.outer, true));
   PolygonSet blocked, free;
   blocked.insert(outers.begin(), outers.end());  // interior-disjoint: no overlay needed
   free.insert(impl_->parts.begin(), impl_->parts.end());

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <cmath>
 #include <unordered_map>
 
@@ -103,8 +104,8 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   // A path the validator accepts sweeps only closure(F): the exact area can skip clipping to F,
   // which is what costs most, so longer paths stay exact.
   const std::size_t limit = std::max(o.exactAreaMaxSegments, o.exactAreaMaxSegmentsClear);
-  bool clear = false;
-  if (pieces <= limit && paths.size() == problem.robots.size()) {
+  bool clear = o.pathsKnownClear;
+  if (!clear && pieces <= limit && paths.size() == problem.robots.size()) {
     Problem unanchored = problem;  // clearance and continuity only: the start is not a metric's concern
     for (Robot& rb : unanchored.robots) rb.start.reset();
     clear = validatePaths(unanchored, paths).valid;
@@ -125,7 +126,9 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   for (const Path& p : paths) swept += 2 * r * p.length() + M_PI * r * r;
   m.sweptAreaOverlap = area > 0 ? swept / area - 1 : 0;
   if (o.coverable) {
-    const CSpace cs(problem.workspace, problem.robots.at(0).radius);
+    std::optional<CSpace> own;
+    if (!o.cspace) own.emplace(problem.workspace, problem.robots.at(0).radius);
+    const CSpace& cs = o.cspace ? *o.cspace : *own;
     std::vector<int> seen;
     for (const Path& p : paths) {
       const int k = cs.componentOf({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
@@ -153,9 +156,9 @@ public:
     buckets_.assign(static_cast<std::size_t>(nx_) * ny_, {});
     for (const Path& p : paths) {
       const std::vector<PointD> pts = p.polyline(flatten);
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        const PointD a = pts[i], b = i + 1 < pts.size() ? pts[i + 1] : pts[i];
-        if (i + 1 == pts.size() && pts.size() > 1) break;
+      // consecutive points as pieces; a path without segments is its start point alone
+      for (std::size_t i = 0; i == 0 || i + 1 < pts.size(); ++i) {
+        const PointD a = pts[i], b = pts[std::min(i + 1, pts.size() - 1)];
         const std::size_t k = pieces_.size();
         pieces_.push_back({a.x, a.y, b.x, b.y});
         for (int j = by(std::min(a.y, b.y)); j <= by(std::max(a.y, b.y)); ++j)

@@ -8,6 +8,8 @@
 
 namespace coverkit {
 
+class CSpace;
+
 struct MetricOptions {
   double speed = 0.2;                  ///< m/s, for time_s
   double turnToleranceDeg = 1.0;       ///< heading changes above this count as turns
@@ -17,6 +19,11 @@ struct MetricOptions {
   /// Also measure against the coverable region (start's component of C-free ⊕ disc(r)); builds the
   /// C-space (radius r and 2r), so it is off unless asked for.
   bool coverable = false;
+  /// The C-space to measure the coverable region against, when the caller has one for this
+  /// workspace and radius already (else it is built).
+  const CSpace* cspace = nullptr;
+  /// The caller's validator already accepted the paths' continuity and clearance: skip that check.
+  bool pathsKnownClear = false;
 };
 
 struct Metrics {
