@@ -306,7 +306,7 @@ int main(int argc, char** argv) {
         auto p = planners::Registry::instance().create(n);
         const auto caps = p->capabilities();
         std::cout << n << ": " << p->description() << "\n  capabilities: " << (caps.online ? "online" : "offline")
-                  << (caps.multiRobot ? ", multi-robot" : ", single robot") << ", output " << caps.output << "\n";
+                  << (caps.multiRobot ? ", multi-robot" : ", single robot") << ", output " << caps.output << ", covers " << caps.coverage << "\n";
         for (const auto& s : p->params())
           std::cout << "  --param " << s.name << "=<" << planners::toString(s.type) << "> default " << s.defaultValue << ", range " << s.range
                     << "\n      " << s.help << "\n";

@@ -59,6 +59,7 @@ public:
   }
 
   std::size_t exactTests = 0;
+  void skipInsideTest() { insideChecked_ = true; }
 
   /// Returns an empty string when clear, else what is wrong.
   std::string segment(const Point& a, const Point& b) {
@@ -185,6 +186,14 @@ bool segmentClear(const Workspace& w, const Rational& r, const Point& a, const P
   Checker c(w, r);
   return c.segment(a, b).empty();
 }
+
+struct ClearanceChecker::Impl {
+  Checker checker;
+  Impl(const Workspace& w, const Rational& r) : checker(w, r) { checker.skipInsideTest(); }
+};
+ClearanceChecker::ClearanceChecker(const Workspace& w, const Rational& r) : impl_(std::make_unique<Impl>(w, r)) {}
+ClearanceChecker::~ClearanceChecker() = default;
+bool ClearanceChecker::clear(const Point& a, const Point& b) { return impl_->checker.segment(a, b).empty(); }
 
 ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& paths, const ValidationOptions& o) {
   ValidationReport rep;

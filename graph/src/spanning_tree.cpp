@@ -95,7 +95,7 @@ SpanningTree orient(const GridGraph& g, int root, const std::vector<std::uint8_t
     stack.pop_back();
     for (int d = 0; d < 4; ++d) {
       if (!(mask[static_cast<std::size_t>(v)] >> d & 1)) continue;
-      const int u = g.id(g.col(v) + kDx[d], g.row(v) + kDy[d]);
+      const int u = g.neighbour(v, d);
       if (seen[static_cast<std::size_t>(u)]) continue;
       seen[static_cast<std::size_t>(u)] = 1;
       link(g, t, v, u);

@@ -12,6 +12,7 @@ Registry& Registry::instance() {
     // One line per built-in planner.
     r.add("stc", [] { return std::make_unique<StcPlanner>(); });
     r.add("spiral_stc", [] { return std::make_unique<SpiralStcPlanner>(); });
+    r.add("full_stc", [] { return std::make_unique<FullStcPlanner>(); });
     return r;
   }();
   return registry;

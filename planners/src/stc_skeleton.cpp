@@ -16,6 +16,8 @@
 #include <coverkit/planners/sensor.h>
 #include <coverkit/planners/stc_skeleton.h>
 
+#include "walk_path.h"
+
 #include <chrono>
 
 namespace coverkit::planners {
@@ -51,12 +53,13 @@ graph::SpanningTree StcSkeleton::growTree(const graph::GridGraph& g, int root, c
   return graph::buildTree(g, root, s, rootFirst);
 }
 
-namespace {
-int quadrantOf(CellIndex c) { return (c.row % 2 == 0) ? (c.col % 2 == 0 ? 0 : 1) : (c.col % 2 == 0 ? 3 : 2); }
-}  // namespace
+int StcSkeleton::startNode(const PlanningContext&, const graph::GridGraph& g, CellIndex s) const {
+  const int v = g.id(s.col / 2, s.row / 2);
+  return g.active[static_cast<std::size_t>(v)] ? v : -1;
+}
 
 std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, const graph::GridGraph&, graph::SpanningTree& tree,
-                                                   CellIndex start, Plan&) const {
+                                                   CellIndex start, const ParamSet&, Plan&) const {
   // Quadrants counter-clockwise: 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left.
   // From quadrant q the robot moves in direction q (E, N, W, S) to quadrant q+1 of the same
   // mega-cell, unless the tree has an edge on the arm it would cross (direction q+3): then it moves
@@ -65,8 +68,7 @@ std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, c
   int mc = start.col / 2, mr = start.row / 2;
   int q = quadrantOf(start);
   const int q0 = q, mc0 = mc, mr0 = mr;
-  auto sub = [](int c, int r, int quad) { return CellIndex{2 * c + (quad == 1 || quad == 2), 2 * r + (quad >= 2)}; };
-  std::vector<CellIndex> walk{sub(mc, mr, q)};
+  std::vector<CellIndex> walk{subCellOf(mc, mr, q)};
   walk.reserve(4 * tree.nodes + 1);
   do {
     const int arm = (q + 3) & 3;
@@ -77,7 +79,7 @@ std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, c
     } else {
       q = (q + 1) & 3;
     }
-    walk.push_back(sub(mc, mr, q));
+    walk.push_back(subCellOf(mc, mr, q));
   } while (!(q == q0 && mc == mc0 && mr == mr0));
   return walk;
 }
@@ -102,6 +104,36 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
   path.start = {toDouble(start.x), toDouble(start.y)};
   plan.paths.push_back(path);
 
+  // A move that no double can make safe (a sub-cell squeezed to exactly 2r between obstacles, at a
+  // centre that is not a double) leaves its sub-cells out: plan again without them (walk_path.h).
+  PlanningContext reduced;
+  const PlanningContext* use = &ctx;
+  std::size_t leftOut = 0;
+  std::vector<CellIndex> unsafe;
+  for (int attempt = 0;; ++attempt) {
+    const Outcome o = planOnce(*use, params, start, plan, unsafe);
+    if (o != Outcome::kUnsafe || attempt == 8) {
+      plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
+      if (o == Outcome::kUnsafe) {
+        plan.status = PlanStatus::kPartialCoverage;
+        plan.message += "; " + formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
+      }
+      return plan;
+    }
+    if (use == &ctx) reduced = ctx;
+    for (CellIndex c : unsafe) {
+      if (reduced.cells.sub(c.col, c.row) == CellState::kFree) ++leftOut;
+      reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
+    }
+    use = &reduced;
+    plan.treeEdges.clear();
+    plan.timings.clear();
+  }
+}
+
+StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const ParamSet& params, const Point& start, Plan& plan,
+                                           std::vector<CellIndex>& unsafe) const {
+  const CellGrid& cells = ctx.cells;
   auto t = Clock::now();
   const graph::GridGraph g = buildGraph(ctx);
   plan.timings.emplace_back("graph", since(t));
@@ -110,32 +142,23 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
   plan.statistics["mega_cells_used"] = static_cast<double>(active);
 
   CellIndex s;
-  if (!cells.locateSub(start, s) || !g.active[static_cast<std::size_t>(g.id(s.col / 2, s.row / 2))]) {
+  const int root = cells.locateSub(start, s) ? startNode(ctx, g, s) : -1;
+  if (root < 0) {
     plan.status = PlanStatus::kInvalidStart;
-    plan.message = "the start is not in a mega-cell this planner can use (STC needs a free mega-cell)";
-    return plan;
+    plan.message = "the start is not in a cell " + name() + " can use (" + startCells() + ")";
+    return Outcome::kDone;
   }
   t = Clock::now();
-  graph::SpanningTree tree = growTree(g, g.id(s.col / 2, s.row / 2), params, (quadrantOf(s) + 3) & 3);
+  graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
   plan.timings.emplace_back("tree", since(t));
 
   t = Clock::now();
-  const std::vector<CellIndex> walk = circumnavigate(ctx, g, tree, s, plan);
+  const std::vector<CellIndex> walk = circumnavigate(ctx, g, tree, s, params, plan);
   plan.statistics["tree_nodes"] = static_cast<double>(tree.nodes);
-  // Waypoint coordinates depend on the column or the row alone: computed once, exactly, per column
-  // and per row (sub-cell centres rounded towards their mega-cell's centre), so the walk is O(1) a step.
-  std::vector<double> subX(static_cast<std::size_t>(cells.subCols())), subY(static_cast<std::size_t>(cells.subRows()));
+  // tree edges between mega-cell centres, computed once per column and per row
   std::vector<double> megaX(static_cast<std::size_t>(cells.megaCols())), megaY(static_cast<std::size_t>(cells.megaRows()));
-  for (int c = 0; c < cells.subCols(); ++c) {
-    const Point p = cells.subCenter(c, 0), m = cells.megaCenter(c / 2, 0);
-    subX[static_cast<std::size_t>(c)] = roundToward(p.x, m.x);
-    if (c % 2 == 0) megaX[static_cast<std::size_t>(c / 2)] = toDouble(m.x);
-  }
-  for (int r = 0; r < cells.subRows(); ++r) {
-    const Point p = cells.subCenter(0, r), m = cells.megaCenter(0, r / 2);
-    subY[static_cast<std::size_t>(r)] = roundToward(p.y, m.y);
-    if (r % 2 == 0) megaY[static_cast<std::size_t>(r / 2)] = toDouble(m.y);
-  }
+  for (int c = 0; c < cells.megaCols(); ++c) megaX[static_cast<std::size_t>(c)] = toDouble(cells.megaCenter(c, 0).x);
+  for (int r = 0; r < cells.megaRows(); ++r) megaY[static_cast<std::size_t>(r)] = toDouble(cells.megaCenter(0, r).y);
   plan.treeEdges.reserve(tree.nodes);
   for (int v = 0; v < static_cast<int>(g.size()); ++v) {
     const int p = tree.parent[static_cast<std::size_t>(v)];
@@ -143,42 +166,22 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
     plan.treeEdges.push_back({{megaX[static_cast<std::size_t>(g.col(p))], megaY[static_cast<std::size_t>(g.row(p))]},
                               {megaX[static_cast<std::size_t>(g.col(v))], megaY[static_cast<std::size_t>(g.row(v))]}});
   }
-
-  // waypoints, rounded towards their mega-cell's centre
-  auto waypoint = [&](CellIndex c) { return PointD{subX[static_cast<std::size_t>(c.col)], subY[static_cast<std::size_t>(c.row)]}; };
-  std::vector<PointD> pts;
-  pts.reserve(walk.size() + 2);
-  pts.push_back(path.start);
-  for (CellIndex c : walk) pts.push_back(waypoint(c));
-  pts.push_back(path.start);
-  const PointD first = pts[1];
-  if ((first.x != path.start.x || first.y != path.start.y) &&
-      !segmentClear(ctx.problem.workspace, robot.radius, start, Point{exactFromDouble(first.x), exactFromDouble(first.y)})) {
+  PlacedWalk placed = placeWalk(ctx, walk, start);
+  if (!placed.startClear) {
     plan.status = PlanStatus::kInvalidStart;
     plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
-    return plan;
+    return Outcome::kDone;
   }
-  // merge collinear moves (same axis, same direction, same fixed coordinate)
-  Path& out = plan.paths[0];
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    const PointD a = out.segments.empty() ? pts[0] : out.segments.back().to, b = pts[i];
-    if (a.x == b.x && a.y == b.y) continue;
-    if (!out.segments.empty()) {
-      PathSegment& last = out.segments.back();
-      const bool sameX = last.from.x == last.to.x && last.to.x == b.x && ((last.to.y - last.from.y > 0) == (b.y - last.to.y > 0));
-      const bool sameY = last.from.y == last.to.y && last.to.y == b.y && ((last.to.x - last.from.x > 0) == (b.x - last.to.x > 0));
-      if (sameX || sameY) {
-        last.to = b;
-        continue;
-      }
-    }
-    out.segments.push_back(PathSegment::line(a, b));
-  }
+  plan.paths[0] = std::move(placed.path);
+  plan.statistics["moves_checked_exactly"] = static_cast<double>(placed.checkedMoves);
+  plan.statistics["moves_repaired"] = static_cast<double>(placed.repairedMoves);
+  plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);
   plan.timings.emplace_back("path", since(t));
   plan.statistics["subcells_in_tour"] = static_cast<double>(walk.size() - 1);
   plan.status = PlanStatus::kExactSolution;
-  plan.message = "covered every sub-cell of the start's component of free mega-cells";
-  return plan;
+  plan.message = coverageClaim();
+  unsafe = std::move(placed.unsafeCells);
+  return unsafe.empty() ? Outcome::kDone : Outcome::kUnsafe;
 }
 
 std::string SpiralStcPlanner::description() const {
@@ -202,31 +205,59 @@ graph::SpanningTree SpiralStcPlanner::growTree(const graph::GridGraph& g, int ro
 }
 
 std::vector<CellIndex> SpiralStcPlanner::circumnavigate(const PlanningContext&, const graph::GridGraph& world, graph::SpanningTree& tree,
-                                                        CellIndex start, Plan& plan) const {
+                                                        CellIndex start, const ParamSet& params, Plan& plan) const {
   // The walk of the offline skeleton, with each tree edge decided when the robot first reaches
-  // the arm it would cross: a known edge (to the parent) is crossed back; otherwise the sensor is
-  // asked about the neighbour across the arm, and a new free one becomes a child.
+  // the arm it would cross: a known edge (to the parent) is crossed back; otherwise the robot looks
+  // at what it has sensed about the neighbour across the arm, and a new free one that no other
+  // cell has claimed becomes a child. The robot remembers every answer (its own map), so it asks
+  // each question once: at most four per mega-cell.
+  graph::TreeStrategy strategy = graph::TreeStrategy::kDfsCcw;
+  graph::parseTreeStrategy(params.text("tree"), strategy);
   MegaCellSensor sensor(world, tree.root);
   const int cols = world.cols;
-  std::vector<std::uint8_t> visited(world.size(), 0);
-  visited[static_cast<std::size_t>(tree.root)] = 1;
+  std::vector<std::uint8_t> visited(world.size(), 0), known(world.size(), 0);  // known: bit 2d asked, bit 2d+1 free
+  std::vector<int> claimedBy(world.size(), -1);
+  auto freeNeighbour = [&](int cell, int d) {
+    std::uint8_t& k = known[static_cast<std::size_t>(cell)];
+    if (!(k >> (2 * d) & 1)) k = static_cast<std::uint8_t>(k | 1u << (2 * d) | (sensor.neighbourFree(cell, d) ? 1u << (2 * d + 1) : 0u));
+    return (k >> (2 * d + 1) & 1) != 0;
+  };
+  auto arrive = [&](int cell, int heading) {  // first arrival: the claims of bfs and kruskal_straight
+    visited[static_cast<std::size_t>(cell)] = 1;
+    auto claim = [&](int d) {
+      if (!freeNeighbour(cell, d)) return;
+      const int u = cell + graph::kDx[d] + graph::kDy[d] * cols;
+      if (!visited[static_cast<std::size_t>(u)] && claimedBy[static_cast<std::size_t>(u)] < 0) claimedBy[static_cast<std::size_t>(u)] = cell;
+    };
+    if (strategy == graph::TreeStrategy::kBfs)
+      for (int d = 0; d < 4; ++d) claim(d);
+    else if (strategy == graph::TreeStrategy::kKruskalStraight && heading >= 0)
+      claim(heading);
+  };
+  arrive(tree.root, -1);
   int mc = start.col / 2, mr = start.row / 2;
   int q = quadrantOf(start);
   const int q0 = q, mc0 = mc, mr0 = mr;
-  auto sub = [](int c, int r, int quad) { return CellIndex{2 * c + (quad == 1 || quad == 2), 2 * r + (quad >= 2)}; };
-  std::vector<CellIndex> walk{sub(mc, mr, q)};
+  std::vector<CellIndex> walk{subCellOf(mc, mr, q)};
   do {
     const int here = mr * cols + mc, arm = (q + 3) & 3;
     bool cross = tree.edges[static_cast<std::size_t>(here)] >> arm & 1;
-    if (!cross && sensor.neighbourFree(here, arm)) {
+    if (!cross && freeNeighbour(here, arm)) {
       const int there = (mr + graph::kDy[arm]) * cols + mc + graph::kDx[arm];
-      if (!visited[static_cast<std::size_t>(there)]) {
-        visited[static_cast<std::size_t>(there)] = 1;
+      const int owner = claimedBy[static_cast<std::size_t>(there)];
+      if (!visited[static_cast<std::size_t>(there)] && (owner < 0 || owner == here)) {
         tree.parent[static_cast<std::size_t>(there)] = here;
         tree.edges[static_cast<std::size_t>(here)] |= static_cast<std::uint8_t>(1u << arm);
         tree.edges[static_cast<std::size_t>(there)] |= static_cast<std::uint8_t>(1u << graph::opposite(arm));
         ++tree.nodes;
         cross = true;
+        sensor.moveTo(there);
+        arrive(there, arm);
+        mc += graph::kDx[arm];
+        mr += graph::kDy[arm];
+        q = arm;
+        walk.push_back(subCellOf(mc, mr, q));
+        continue;
       }
     }
     if (cross) {
@@ -237,7 +268,7 @@ std::vector<CellIndex> SpiralStcPlanner::circumnavigate(const PlanningContext&, 
     } else {
       q = (q + 1) & 3;
     }
-    walk.push_back(sub(mc, mr, q));
+    walk.push_back(subCellOf(mc, mr, q));
   } while (!(q == q0 && mc == mc0 && mr == mr0));
   plan.statistics["sensor_queries"] = static_cast<double>(sensor.log().size());
   return walk;

@@ -17,29 +17,8 @@ namespace coverkit::testing_helpers {
   return ::testing::AssertionSuccess();
 }
 
-::testing::AssertionResult coversStartComponent(const planners::PlanningContext& ctx, const Plan& plan) {
-  const CellGrid& cells = ctx.cells;
-  CellIndex s;
-  if (!cells.locateSub(*ctx.problem.robots[0].start, s)) return ::testing::AssertionFailure() << "start outside the grid";
-  const int mc = cells.megaCols(), mr = cells.megaRows();
-  std::vector<char> comp(static_cast<std::size_t>(mc) * mr, 0);
-  std::vector<int> stack{(s.row / 2) * mc + s.col / 2};
-  if (cells.mega(s.col / 2, s.row / 2) != CellState::kFree) return ::testing::AssertionFailure() << "start mega-cell not free";
-  comp[static_cast<std::size_t>(stack[0])] = 1;
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    const int c = v % mc, r = v / mc;
-    const int nb[4][2] = {{c + 1, r}, {c - 1, r}, {c, r + 1}, {c, r - 1}};
-    for (auto& n : nb) {
-      if (!cells.insideMega(n[0], n[1]) || cells.mega(n[0], n[1]) != CellState::kFree) continue;
-      const int u = n[1] * mc + n[0];
-      if (comp[static_cast<std::size_t>(u)]) continue;
-      comp[static_cast<std::size_t>(u)] = 1;
-      stack.push_back(u);
-    }
-  }
-  // entered sub-cells from the path's polyline (independent of the metrics' code path: dense sampling)
+std::vector<char> enteredSubcells(const CellGrid& cells, const Plan& plan) {
+  // independent of the metrics' code path: dense sampling of the polyline
   std::vector<char> seen(cells.subCount(), 0);
   const double D = cells.subSizeD();
   for (const Path& p : plan.paths) {
@@ -54,14 +33,93 @@ namespace coverkit::testing_helpers {
       }
     }
   }
+  return seen;
+}
+
+namespace {
+/// 4-connected flood fill over sub-cells accepted by `ok`, from `s`.
+template <class Ok>
+std::vector<char> flood(const CellGrid& cells, CellIndex s, Ok ok) {
+  std::vector<char> comp(cells.subCount(), 0);
+  if (!ok(s.col, s.row)) return comp;
+  std::vector<CellIndex> stack{s};
+  comp[static_cast<std::size_t>(s.row) * cells.subCols() + s.col] = 1;
+  while (!stack.empty()) {
+    const CellIndex v = stack.back();
+    stack.pop_back();
+    for (auto [dc, dr] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int c = v.col + dc, r = v.row + dr;
+      if (!cells.insideSub(c, r) || !ok(c, r)) continue;
+      char& m = comp[static_cast<std::size_t>(r) * cells.subCols() + c];
+      if (m) continue;
+      m = 1;
+      stack.push_back({c, r});
+    }
+  }
+  return comp;
+}
+}  // namespace
+
+::testing::AssertionResult coversStartComponent(const planners::PlanningContext& ctx, const Plan& plan) {
+  const CellGrid& cells = ctx.cells;
+  CellIndex s;
+  if (!cells.locateSub(*ctx.problem.robots[0].start, s)) return ::testing::AssertionFailure() << "start outside the grid";
+  if (cells.mega(s.col / 2, s.row / 2) != CellState::kFree) return ::testing::AssertionFailure() << "start mega-cell not free";
+  // the sub-cells of the free mega-cells 4-connected to the start's
+  const auto comp = flood(cells, s, [&](int c, int r) { return cells.mega(c / 2, r / 2) == CellState::kFree; });
+  const auto seen = enteredSubcells(cells, plan);
   std::size_t missing = 0;
   std::ostringstream first;
-  for (int r = 0; r < cells.subRows(); ++r)
-    for (int c = 0; c < cells.subCols(); ++c)
-      if (comp[static_cast<std::size_t>(r / 2) * mc + c / 2] && !seen[static_cast<std::size_t>(r) * cells.subCols() + c]) {
-        if (missing++ == 0) first << "(" << c << "," << r << ")";
-      }
+  for (std::size_t i = 0; i < comp.size(); ++i)
+    if (comp[i] && !seen[i] && missing++ == 0) first << "(" << i % cells.subCols() << "," << i / cells.subCols() << ")";
   if (missing) return ::testing::AssertionFailure() << missing << " sub-cells of the start's component not entered, first " << first.str();
+  return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult coversReachableSubcells(const planners::PlanningContext& ctx, const Plan& plan) {
+  const CellGrid& cells = ctx.cells;
+  CellIndex s;
+  if (!cells.locateSub(*ctx.problem.robots[0].start, s)) return ::testing::AssertionFailure() << "start outside the grid";
+  auto isFree = [&](int c, int r) { return cells.insideSub(c, r) && cells.sub(c, r) == CellState::kFree; };
+  // squeezed: exactly 2r wide between cells that are not free (on both sides of one axis, within
+  // the 3×3 block around it), at a centre coordinate that is not a double: no double is safe there
+  const bool tight = cells.subSize() == 2 * ctx.problem.robots[0].radius;
+  auto blockedSide = [&](int c, int r, int dc, int dr) {
+    for (int k = -1; k <= 1; ++k)
+      if (!isFree(c + dc + k * dr, r + dr + k * dc)) return true;
+    return false;
+  };
+  auto squeezed = [&](int c, int r) {
+    if (!tight) return false;
+    const Point p = cells.subCenter(c, r);
+    return (exactFromDouble(toDouble(p.x)) != p.x && blockedSide(c, r, -1, 0) && blockedSide(c, r, 1, 0)) ||
+           (exactFromDouble(toDouble(p.y)) != p.y && blockedSide(c, r, 0, -1) && blockedSide(c, r, 0, 1));
+  };
+  const auto reachable = flood(cells, s, isFree);
+  const auto safe = flood(cells, s, [&](int c, int r) { return isFree(c, r) && !squeezed(c, r); });
+  const auto seen = enteredSubcells(cells, plan);
+  std::size_t missing = 0, excused = 0;
+  std::ostringstream first;
+  for (std::size_t i = 0; i < reachable.size(); ++i) {
+    if (!reachable[i] || seen[i]) continue;
+    if (!safe[i]) {
+      ++excused;
+      continue;
+    }
+    if (missing++ > 0) continue;
+    const int c0 = static_cast<int>(i % static_cast<std::size_t>(cells.subCols())), r0 = static_cast<int>(i / static_cast<std::size_t>(cells.subCols()));
+    first << "(" << c0 << "," << r0 << "); around it, top row first (# not free, o not entered, x squeezed):";
+    for (int r = r0 + 2; r >= r0 - 2; --r) {
+      first << "\n   ";
+      for (int c = c0 - 2; c <= c0 + 2; ++c)
+        first << (!isFree(c, r) ? '#' : squeezed(c, r) ? 'x' : seen[static_cast<std::size_t>(r) * cells.subCols() + c] ? '.' : 'o');
+    }
+  }
+  if (missing)
+    return ::testing::AssertionFailure() << missing << " reachable free sub-cells not entered, first " << first.str();
+  const auto it = plan.statistics.find("subcells_left_out");
+  if (excused > 0 && (it == plan.statistics.end() || it->second <= 0))
+    return ::testing::AssertionFailure() << excused << " squeezed sub-cells not entered but none reported left out";
   return ::testing::AssertionSuccess();
 }
 

@@ -12,6 +12,13 @@ namespace coverkit::testing_helpers {
 ::testing::AssertionResult planIsValid(const planners::PlanningContext& ctx, const Plan& plan);
 /// Every sub-cell of the free mega-cells 4-connected to the start's mega-cell is entered.
 ::testing::AssertionResult coversStartComponent(const planners::PlanningContext& ctx, const Plan& plan);
+/// Every free sub-cell 4-connected to the start's sub-cell through free sub-cells is entered,
+/// except those only reachable through sub-cells squeezed to exactly 2r (cells that are not free on
+/// both sides of an axis, within the 3×3 block) at a centre that is not a double: no double path
+/// may be safe there, and the plan must report sub-cells left out.
+::testing::AssertionResult coversReachableSubcells(const planners::PlanningContext& ctx, const Plan& plan);
+/// Sub-cells the paths' centres pass through (dense sampling, independent of the metrics).
+std::vector<char> enteredSubcells(const CellGrid& cells, const Plan& plan);
 /// A context for a workspace with one robot.
 planners::PlanningContext contextFor(const Workspace& w, const Rational& radius, std::optional<Point> start = std::nullopt);
 

@@ -3,6 +3,8 @@
 // It knows nothing of planners; it reads a path's doubles as the exact rationals they hold.
 #include <coverkit/geometry/path.h>
 
+#include <memory>
+
 #include <string>
 #include <vector>
 
@@ -44,5 +46,20 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
 /// Exact: the disc of radius r centred anywhere on the segment [a,b] lies in W and meets no obstacle
 /// interior (distance to every boundary edge ≥ r, and a inside W). Exposed for tests and planners.
 bool segmentClear(const Workspace& w, const Rational& r, const Point& a, const Point& b);
+
+/// segmentClear for many segments of one workspace and radius: the edge index is built once.
+/// `clear` does not test that a lies in W (planners that call it know it does); the rest is exact.
+class ClearanceChecker {
+public:
+  ClearanceChecker(const Workspace& w, const Rational& r);
+  ~ClearanceChecker();
+  ClearanceChecker(const ClearanceChecker&) = delete;
+  ClearanceChecker& operator=(const ClearanceChecker&) = delete;
+  bool clear(const Point& a, const Point& b);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace coverkit

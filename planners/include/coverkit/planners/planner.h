@@ -47,6 +47,9 @@ struct Capabilities {
   bool multiRobot = false;
   bool needsCells = true;
   std::string output = "lines";   ///< "lines" or "lines+arcs"
+  /// What a successful plan covers: "free_mega_cells" (every sub-cell of the free mega-cells
+  /// 4-connected to the start's) or "free_sub_cells" (every free sub-cell 4-connected to the start's).
+  std::string coverage = "free_mega_cells";
 };
 
 /// Stops a planner: a deadline (or none).
