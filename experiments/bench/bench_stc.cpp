@@ -1,4 +1,4 @@
-// STC end to end (cells excluded: the context is built once) from 10^4 to 10^7 sub-cells.
+// The STC family end to end (cells excluded: the context is built once) from 10^4 to 10^7 sub-cells.
 #include <benchmark/benchmark.h>
 
 #include <coverkit/datasets/generators.h>
@@ -9,17 +9,19 @@
 using namespace coverkit;
 
 namespace {
-/// A seeded clustered grid map of about `cells` pixels (5 % blocked), classified with D = 1.
-planners::PlanningContext gridContext(long cells, int& side) {
+/// A seeded clustered grid map of about `cells` pixels (5 % blocked), one pixel per sub-cell:
+/// pixels of 1 and r = 1/2 (centres are doubles), or pixels of 1/10 and r = 1/20 (they are not).
+planners::PlanningContext gridContext(long cells, int& side, bool decimal = false) {
   side = static_cast<int>(std::sqrt(static_cast<double>(cells)));
   datasets::GridMapSpec spec;
   spec.width = spec.height = side;
   spec.density = 0.05;
   spec.clustered = true;
   spec.seed = 5;
+  spec.resolution = decimal ? Rational(1, 10) : Rational(1);
   Problem p;
   p.workspace = datasets::gridToWorkspace(datasets::generateGridMap(spec), "bench");
-  p.robots.push_back({Rational(1, 2), std::nullopt});  // D = 1: one pixel per sub-cell
+  p.robots.push_back({decimal ? Rational(1, 20) : Rational(1, 2), std::nullopt});
   return planners::makeContext(p);
 }
 }  // namespace
@@ -43,3 +45,21 @@ static void BM_SpiralStc(benchmark::State& state) {
   state.counters["subcells"] = static_cast<double>(side) * side;
 }
 BENCHMARK(BM_SpiralStc)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
+
+// Full-STC: arg 1 = 0 pixels of 1 (no rounding), 1 pixels of 1/10 (waypoints checked and repaired
+// next to obstacles).
+static void BM_FullStc(benchmark::State& state) {
+  int side = 0;
+  const planners::PlanningContext ctx = gridContext(state.range(0), side, state.range(1) == 1);
+  double repaired = 0, checked = 0;
+  for (auto _ : state) {
+    Plan plan = planners::runPlanner("full_stc", ctx, {});
+    repaired = plan.statistics["moves_repaired"];
+    checked = plan.statistics["moves_checked_exactly"];
+    benchmark::DoNotOptimize(plan);
+  }
+  state.counters["subcells"] = static_cast<double>(side) * side;
+  state.counters["repaired"] = repaired;
+  state.counters["checked"] = checked;
+}
+BENCHMARK(BM_FullStc)->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {0, 1}})->Unit(benchmark::kMillisecond);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace coverkit::planners {
@@ -15,6 +16,7 @@ namespace {
 /// The candidate doubles of one centre coordinate: the preferred one first.
 struct Candidates {
   double v[2] = {0, 0};
+  int side[2] = {0, 0};  ///< sign of v − centre: which neighbour the disc leans into
   int n = 1;
 };
 
@@ -22,7 +24,9 @@ Candidates candidates(const Rational& centre, const Rational& toward) {
   Candidates c;
   c.v[0] = roundToward(centre, toward);
   if (exactFromDouble(c.v[0]) == centre) return c;
-  c.v[1] = std::nextafter(c.v[0], exactFromDouble(c.v[0]) < centre ? HUGE_VAL : -HUGE_VAL);
+  c.side[0] = exactFromDouble(c.v[0]) < centre ? -1 : 1;
+  c.v[1] = std::nextafter(c.v[0], c.side[0] < 0 ? HUGE_VAL : -HUGE_VAL);
+  c.side[1] = -c.side[0];
   c.n = 2;
   return c;
 }
@@ -147,15 +151,64 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
       for (int c = c0; c <= c1 && allFree; ++c) allFree = cells.insideSub(c, r) && cells.sub(c, r) == CellState::kFree;
     need[k] = !allFree;
   }
-  ClearanceChecker checker(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
+  auto nonFree = [&](int c, int r) { return !cells.insideSub(c, r) || cells.sub(c, r) != CellState::kFree; };
+  auto cand = [&](int v) -> const Candidates& {
+    const Var& w = vars[static_cast<std::size_t>(v)];
+    return (w.isX ? colC : rowC)[static_cast<std::size_t>(w.index)];
+  };
+  auto side = [&](int v) { return cand(v).side[vars[static_cast<std::size_t>(v)].pick]; };
+  // The cells a disc leaning to `dir` (−1 or +1) of variable v's line would enter, all free?
+  auto leanFree = [&](int v, int dir) {
+    const Var& w = vars[static_cast<std::size_t>(v)];
+    const CellIndex a = pts[static_cast<std::size_t>(w.firstPoint)].cell, b = pts[static_cast<std::size_t>(w.lastPoint)].cell;
+    if (w.isX) {
+      for (int r = std::min(a.row, b.row); r <= std::max(a.row, b.row); ++r)
+        if (nonFree(w.index + dir, r)) return false;
+    } else {
+      for (int c = std::min(a.col, b.col); c <= std::max(a.col, b.col); ++c)
+        if (nonFree(c, w.index + dir)) return false;
+    }
+    return true;
+  };
+  // First choice by the cells alone: the preferred side unless it leans into a cell that is not
+  // free and the other side does not.
+  for (int v = 0; v < static_cast<int>(vars.size()); ++v) {
+    const Candidates& c = cand(v);
+    if (c.n > 1 && !leanFree(v, c.side[0]) && leanFree(v, c.side[1])) vars[static_cast<std::size_t>(v)].pick = 1;
+  }
+  // A move is safe without an exact test when its disc leans only into free cells (it then stays
+  // in the union of free closed cells); otherwise, and for the moves from and to the start point,
+  // ClearanceChecker decides.
+  auto leansIntoFreeOnly = [&](const Pt& a, const Pt& b) {
+    const int c0 = std::min(a.cell.col, b.cell.col), c1 = std::max(a.cell.col, b.cell.col);
+    const int r0 = std::min(a.cell.row, b.cell.row), r1 = std::max(a.cell.row, b.cell.row);
+    for (const Pt* p : {&a, &b}) {
+      const int sx = side(p->xv), sy = side(p->yv);
+      if ((sx > 0 && p->cell.col == c1) || (sx < 0 && p->cell.col == c0))
+        for (int r = r0; r <= r1; ++r)
+          if (nonFree(p->cell.col + sx, r)) return false;
+      if ((sy > 0 && p->cell.row == r1) || (sy < 0 && p->cell.row == r0))
+        for (int c = c0; c <= c1; ++c)
+          if (nonFree(c, p->cell.row + sy)) return false;
+    }
+    return true;
+  };
+  std::unique_ptr<ClearanceChecker> checker;  // built at the first exact test (its edge index costs)
   auto clear = [&](std::size_t k) {
-    ++out.checkedMoves;
+    if (!need[k]) return true;
     const PointD a = coord(pts[k]), b = coord(pts[k + 1]);
-    return checker.clear(Point{exactFromDouble(a.x), exactFromDouble(a.y)}, Point{exactFromDouble(b.x), exactFromDouble(b.y)});
+    const bool fromStart = pts[k].xv < 0, toStart = pts[k + 1].xv < 0;
+    if (!fromStart && !toStart && leansIntoFreeOnly(pts[k], pts[k + 1])) return true;
+    // the start point where it coincides with its waypoint (the default start does)
+    if (a.x == b.x && a.y == b.y && (fromStart != toStart) && leansIntoFreeOnly(pts[fromStart ? k + 1 : k], pts[fromStart ? k + 1 : k]))
+      return true;
+    ++out.checkedMoves;
+    if (!checker) checker = std::make_unique<ClearanceChecker>(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
+    return checker->clear(Point{exactFromDouble(a.x), exactFromDouble(a.y)}, Point{exactFromDouble(b.x), exactFromDouble(b.y)});
   };
   std::vector<std::size_t> failing;
   for (std::size_t k = 0; k < nSeg; ++k)
-    if (need[k] && !clear(k)) failing.push_back(k);
+    if (!clear(k)) failing.push_back(k);
   for (std::size_t k : failing) {
     if (clear(k)) continue;  // mended by an earlier repair
     std::vector<int> vs;
@@ -173,7 +226,7 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
     for (int v : vs) {
       const Var& w = vars[static_cast<std::size_t>(v)];
       for (std::size_t j = static_cast<std::size_t>(std::max(0, w.firstPoint - 1)); j <= std::min(nSeg - 1, static_cast<std::size_t>(w.lastPoint)); ++j)
-        if (need[j] && j != k && std::find(affected.begin(), affected.end(), j) == affected.end()) affected.push_back(j);
+        if (j != k && std::find(affected.begin(), affected.end(), j) == affected.end()) affected.push_back(j);
     }
     std::vector<char> wasClear;
     for (std::size_t j : affected) wasClear.push_back(clear(j));
@@ -200,12 +253,11 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
       bool ok = true;
       const std::size_t lo = static_cast<std::size_t>(std::max(0, w->firstPoint - 1));
       const std::size_t hi = std::min(nSeg - 1, static_cast<std::size_t>(w->lastPoint));
-      for (std::size_t j = lo; j <= hi && ok; ++j) ok = !need[j] || clear(j);
+      for (std::size_t j = lo; j <= hi && ok; ++j) ok = clear(j);
       if (ok) break;
       w->pick = old;
     }
   }
-  auto nonFree = [&](int c, int r) { return !cells.insideSub(c, r) || cells.sub(c, r) != CellState::kFree; };
   // a side of cell (c, r) in direction (dc, dr) is closed when one of the three cells along it is
   // not free (a corner counts: the disc passes a corner only at the exact centre line too)
   auto closedSide = [&](int c, int r, int dc, int dr) {
