@@ -189,6 +189,12 @@ std::string SpiralStcPlanner::description() const {
          "counter-clockwise as it goes, covers every sub-cell of the reachable free mega-cells";
 }
 
+std::vector<ParamSpec> SpiralStcPlanner::params() const {
+  return {{"tree", ParamType::kChoice, "dfs_ccw", "dfs_ccw|bfs|kruskal_straight",
+           "online tree rule: first new free neighbour counter-clockwise (the paper's), claim every new neighbour on arrival "
+           "(breadth-first discovery), or claim the neighbour straight ahead first (straight runs)"}};
+}
+
 Capabilities SpiralStcPlanner::capabilities() const {
   Capabilities c;
   c.online = true;

@@ -55,10 +55,14 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
   for (int r = 0; r < cells.subRows(); ++r)
     rowC[static_cast<std::size_t>(r)] = candidates(cells.subCenter(0, r).y, cells.megaCenter(0, r / 2).y);
 
-  std::vector<CellIndex> walk;
-  walk.reserve(rawWalk.size());
-  for (CellIndex c : rawWalk)
-    if (walk.empty() || !(walk.back() == c)) walk.push_back(c);
+  // consecutive repeats dropped (a copy only when there are any)
+  bool repeats = false;
+  for (std::size_t i = 1; i < rawWalk.size() && !repeats; ++i) repeats = rawWalk[i] == rawWalk[i - 1];
+  std::vector<CellIndex> deduplicated;
+  if (repeats)
+    for (CellIndex c : rawWalk)
+      if (deduplicated.empty() || !(deduplicated.back() == c)) deduplicated.push_back(c);
+  const std::vector<CellIndex>& walk = repeats ? deduplicated : rawWalk;
 
   // variables and points
   std::vector<Var> vars;

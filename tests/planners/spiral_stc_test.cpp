@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 using namespace coverkit;
 
 TEST(Sensor, AnswersOnlyForTheRobotsCellAndLogsEveryQuestion) {
@@ -73,6 +75,30 @@ TEST(SpiralStc, SamePathAsOfflineStcWithDfsCcwFromEveryQuadrant) {
       EXPECT_LE(mt.length, static_cast<double>(mt.enteredSubcells + m) * D + 2 * D) << "seed " << seed;  // + the start's connector
       // local questions only, at most four per mega-cell of the tree
       EXPECT_LE(online.statistics.at("sensor_queries"), 4 * online.statistics.at("tree_nodes"));
+    }
+  }
+}
+
+TEST(SpiralStc, OnlineTreeRulesAskOnlyLocalQuestionsAndCoverTheSameMegaCells) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    datasets::GridMapSpec spec;
+    spec.width = 40;
+    spec.height = 30;
+    spec.density = 0.1;
+    spec.clustered = seed % 2 == 0;
+    spec.seed = seed;
+    const Workspace w = datasets::gridToWorkspace(datasets::generateGridMap(spec), "grid");
+    const auto ctx = testing_helpers::contextFor(w, Rational(1, 2));
+    const Plan offline = planners::runPlanner("stc", ctx, {});
+    for (const char* tree : {"dfs_ccw", "bfs", "kruskal_straight"}) {
+      // the sensor throws on any question about a cell the robot is not in: running is the proof
+      const Plan online = planners::runPlanner("spiral_stc", ctx, {{"tree", tree}});
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, online)) << seed << " " << tree;
+      EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, online)) << seed << " " << tree;
+      EXPECT_EQ(online.statistics.at("tree_nodes"), offline.statistics.at("tree_nodes")) << tree;
+      EXPECT_LE(online.statistics.at("sensor_queries"), 4 * online.statistics.at("tree_nodes")) << tree;
+      // a tree of n mega-cells is walked around in 4n moves, whatever its shape
+      EXPECT_EQ(online.statistics.at("subcells_in_tour"), 4 * online.statistics.at("tree_nodes")) << tree;
     }
   }
 }

@@ -67,6 +67,7 @@ class SpiralStcPlanner : public StcSkeleton {
 public:
   std::string name() const override { return "spiral_stc"; }
   std::string description() const override;
+  std::vector<ParamSpec> params() const override;
   Capabilities capabilities() const override;
 
 protected:
