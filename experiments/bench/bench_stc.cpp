@@ -56,6 +56,8 @@ static void BM_FullStc(benchmark::State& state) {
     Plan plan = planners::runPlanner("full_stc", ctx, {});
     repaired = plan.statistics["moves_repaired"];
     checked = plan.statistics["moves_checked_exactly"];
+    state.counters["attempts"] = plan.statistics["attempts"];
+    state.counters["left_out"] = plan.statistics["subcells_left_out"];
     for (const auto& [phase, seconds] : plan.timings) state.counters["t_" + phase] = seconds;
     benchmark::DoNotOptimize(plan);
   }

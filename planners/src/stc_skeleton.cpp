@@ -114,6 +114,7 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
     const Outcome o = planOnce(*use, params, start, plan, unsafe);
     if (o != Outcome::kUnsafe || attempt == 8) {
       plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
+      plan.statistics["attempts"] = attempt + 1;
       if (o == Outcome::kUnsafe) {
         plan.status = PlanStatus::kPartialCoverage;
         plan.message += "; " + formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
