@@ -1,6 +1,7 @@
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 #include <coverkit/planners/stc_skeleton.h>
+#include <coverkit/planners/tracc.h>
 
 #include <algorithm>
 
@@ -13,6 +14,7 @@ Registry& Registry::instance() {
     r.add("stc", [] { return std::make_unique<StcPlanner>(); });
     r.add("spiral_stc", [] { return std::make_unique<SpiralStcPlanner>(); });
     r.add("full_stc", [] { return std::make_unique<FullStcPlanner>(); });
+    r.add("tracc", [] { return std::make_unique<TraccPlanner>(); });
     return r;
   }();
   return registry;

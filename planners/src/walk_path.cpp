@@ -47,7 +47,7 @@ bool horizontal(int dir) { return dir == 0 || dir == 2; }
 
 }  // namespace
 
-PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& rawWalk, const Point& start) {
+PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& rawWalk, const Point& start, bool backToStart) {
   const CellGrid& cells = ctx.cells;
   std::vector<Candidates> colC(static_cast<std::size_t>(cells.subCols())), rowC(static_cast<std::size_t>(cells.subRows()));
   for (int c = 0; c < cells.subCols(); ++c)
@@ -129,7 +129,7 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
     }
     at(runDir, fixed, along(runDir, walk.back()), walk.back());
   }
-  point(-1, -1, walk.back());
+  if (backToStart) point(-1, -1, walk.back());
 
   PlacedWalk out;
   const PointD s0{toDouble(start.x), toDouble(start.y)};

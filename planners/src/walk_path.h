@@ -25,7 +25,7 @@
 namespace coverkit::planners {
 
 struct PlacedWalk {
-  Path path;                   ///< from the start point along the walk and back to the start point
+  Path path;                   ///< from the start point along the walk (and back to the start point)
   bool startClear = true;      ///< the straight move from the start point to its sub-cell is clear
   std::size_t checkedMoves = 0, repairedMoves = 0, unsafeMoves = 0;
   /// The sub-cells to blame for the unsafe moves: those on the move squeezed between cells that are
@@ -34,8 +34,9 @@ struct PlacedWalk {
   std::vector<CellIndex> unsafeCells;
 };
 
-/// `walk`: sub-cells, each 4-adjacent to the next (repeats allowed), beginning and ending at the
-/// start's sub-cell. Throws std::logic_error when two consecutive sub-cells are not adjacent.
-PlacedWalk placeWalk(const PlanningContext& context, const std::vector<CellIndex>& walk, const Point& start);
+/// `walk`: sub-cells, each 4-adjacent to the next (repeats allowed), beginning at the start's
+/// sub-cell (and, with `backToStart`, ending there: the path then returns to the start point).
+/// Throws std::logic_error when two consecutive sub-cells are not adjacent.
+PlacedWalk placeWalk(const PlanningContext& context, const std::vector<CellIndex>& walk, const Point& start, bool backToStart = true);
 
 }  // namespace coverkit::planners

@@ -3,8 +3,10 @@
 // mega-cell only, whether the neighbour in a direction is free. Any other question is refused with
 // an exception (never a silent answer), and every question is logged, so tests can prove that an
 // online planner is online.
+#include <coverkit/geometry/cell_grid.h>
 #include <coverkit/graph/grid_graph.h>
 
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -42,6 +44,41 @@ public:
 private:
   const graph::GridGraph& world_;
   int here_;
+  std::vector<Query> log_;
+};
+
+/// The same contract on the sub-cell grid (TRACC, BSA): the robot senses the four cells next to its
+/// own; a sub-cell is free when CellGrid says so. Questions about any other cell, and moves to a
+/// cell that is not a free 4-neighbour, throw std::logic_error; every question is logged.
+class CellSensor {
+public:
+  struct Query {
+    CellIndex from;
+    int direction;
+    bool answer;
+  };
+
+  CellSensor(const CellGrid& cells, CellIndex start) : cells_(cells), here_(start) {}
+
+  bool neighbourFree(CellIndex cell, int direction) {
+    if (!(cell == here_)) throw std::logic_error("sensor: asked about a cell the robot is not in");
+    const int c = cell.col + graph::kDx[direction], r = cell.row + graph::kDy[direction];
+    const bool answer = cells_.insideSub(c, r) && cells_.sub(c, r) == CellState::kFree;
+    log_.push_back({cell, direction, answer});
+    return answer;
+  }
+  void moveTo(CellIndex cell) {
+    const int d = std::abs(cell.col - here_.col) + std::abs(cell.row - here_.row);
+    if (d > 1 || !cells_.insideSub(cell.col, cell.row) || cells_.sub(cell.col, cell.row) != CellState::kFree)
+      throw std::logic_error("sensor: the robot cannot jump to a cell that is not a free neighbour");
+    here_ = cell;
+  }
+  CellIndex here() const { return here_; }
+  const std::vector<Query>& log() const { return log_; }
+
+private:
+  const CellGrid& cells_;
+  CellIndex here_;
   std::vector<Query> log_;
 };
 

@@ -1,0 +1,289 @@
+// TRACC. See tracc.h for the reference and the decisions.
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/sensor.h>
+#include <coverkit/planners/tracc.h>
+
+#include "walk_path.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <queue>
+
+namespace coverkit::planners {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A* on the 4-connected sub-cell grid over cells not known to be unsafe, from `from` (the target)
+/// back to `to` (the robot); Manhattan heuristic; a binary heap with lazy deletion (a popped cell
+/// already closed is skipped: the open list is never rescanned or re-sorted). Per-search arrays are
+/// reset by a search stamp, not cleared.
+class GridAStar {
+public:
+  GridAStar(int cols, int rows) : cols_(cols), rows_(rows), stamp_(static_cast<std::size_t>(cols) * rows, 0),
+                                  closed_(stamp_.size(), 0), g_(stamp_.size(), 0), next_(stamp_.size(), -1) {}
+
+  /// Cells from `to` to `from` (both included), or empty; `explored` gets every closed cell.
+  template <class Passable>
+  std::vector<int> search(int from, int to, Passable passable, std::vector<int>& explored) {
+    ++search_;
+    explored.clear();
+    using Entry = std::tuple<long, long, int>;  // f, −g (deeper first on ties), cell
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    const int tc = to % cols_, tr = to / cols_;
+    auto h = [&](int v) { return static_cast<long>(std::abs(v % cols_ - tc) + std::abs(v / cols_ - tr)); };
+    auto touch = [&](int v) {
+      if (stamp_[static_cast<std::size_t>(v)] != search_) {
+        stamp_[static_cast<std::size_t>(v)] = search_;
+        closed_[static_cast<std::size_t>(v)] = 0;
+        g_[static_cast<std::size_t>(v)] = -1;
+      }
+    };
+    touch(from);
+    g_[static_cast<std::size_t>(from)] = 0;
+    next_[static_cast<std::size_t>(from)] = -1;
+    open.emplace(h(from), 0, from);
+    while (!open.empty()) {
+      const auto [f, ng, v] = open.top();
+      open.pop();
+      if (closed_[static_cast<std::size_t>(v)]) continue;
+      closed_[static_cast<std::size_t>(v)] = 1;
+      explored.push_back(v);
+      ++expansions;
+      if (v == to) {
+        std::vector<int> path;
+        for (int u = to; u >= 0; u = next_[static_cast<std::size_t>(u)]) path.push_back(u);
+        return path;
+      }
+      const int c = v % cols_, r = v / cols_;
+      for (int d = 0; d < 4; ++d) {
+        const int nc = c + graph::kDx[d], nr = r + graph::kDy[d];
+        if (nc < 0 || nr < 0 || nc >= cols_ || nr >= rows_) continue;
+        const int u = nr * cols_ + nc;
+        if (u != to && !passable(u)) continue;
+        touch(u);
+        const long gu = g_[static_cast<std::size_t>(v)] + 1;
+        if (closed_[static_cast<std::size_t>(u)] || (g_[static_cast<std::size_t>(u)] >= 0 && g_[static_cast<std::size_t>(u)] <= gu)) continue;
+        g_[static_cast<std::size_t>(u)] = gu;
+        next_[static_cast<std::size_t>(u)] = v;
+        open.emplace(gu + h(u), -gu, u);
+      }
+    }
+    return {};
+  }
+  std::size_t expansions = 0;
+
+private:
+  int cols_, rows_;
+  unsigned search_ = 0;
+  std::vector<unsigned> stamp_;
+  std::vector<std::uint8_t> closed_;
+  std::vector<long> g_;
+  std::vector<int> next_;
+};
+
+}  // namespace
+
+std::string TraccPlanner::description() const {
+  return "TRACC (Thiayarajan & Balaji 2012), online: senses the four neighbour cells, follows a boustrophedon flow "
+         "over the sub-cells, detours by A* around cells known to be unsafe, reports unsafe and enclosed cells";
+}
+
+std::vector<ParamSpec> TraccPlanner::params() const {
+  return {{"flow", ParamType::kChoice, "rows", "rows|columns",
+           "the boustrophedon flow path: along rows (the paper's Fig. 2) or along columns"}};
+}
+
+Capabilities TraccPlanner::capabilities() const {
+  Capabilities c;
+  c.online = true;
+  c.coverage = "free_sub_cells";
+  return c;
+}
+
+Plan TraccPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition& stop) {
+  Plan plan;
+  plan.planner = name();
+  const CellGrid& cells = ctx.cells;
+  const Robot& robot = ctx.problem.robots.at(0);
+  if (cells.subSize() < 2 * robot.radius)
+    throw InputError("--cell-size", formatDouble(cells.subSizeD()),
+                     "must be at least 2r = " + formatDouble(Rational(2 * robot.radius).get_d()) + " for " + name() +
+                         " (the disc must fit in its cell)");
+  plan.paths.emplace_back();
+  if (!robot.start) {
+    plan.status = PlanStatus::kNoFreeSpace;
+    plan.message = "no free sub-cell for a default start";
+    return plan;
+  }
+  const Point startPoint = *robot.start;
+  plan.paths[0].start = {toDouble(startPoint.x), toDouble(startPoint.y)};
+  CellIndex s;
+  if (!cells.locateSub(startPoint, s) || cells.sub(s.col, s.row) != CellState::kFree) {
+    plan.status = PlanStatus::kInvalidStart;
+    plan.message = "the start is not in a free sub-cell";
+    return plan;
+  }
+  // Sub-cells squeezed to exactly 2r at a centre that is not a double cannot be crossed by any
+  // double path (walk_path.h): the run is made again with them blocked, as the STC family does.
+  PlanningContext reduced;
+  const PlanningContext* use = &ctx;
+  std::size_t leftOut = 0;
+  for (int attempt = 0;; ++attempt) {
+    std::vector<CellIndex> unsafeCells;
+    runOnce(*use, s, params, stop, plan, unsafeCells);
+    if (unsafeCells.empty() || attempt == 8) {
+      plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
+      return plan;
+    }
+    if (use == &ctx) reduced = ctx;
+    for (CellIndex c : unsafeCells) {
+      if (reduced.cells.sub(c.col, c.row) == CellState::kFree && !(c == s)) {
+        ++leftOut;
+        reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
+      }
+    }
+    use = &reduced;
+    plan.timings.clear();
+  }
+}
+
+void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamSet& params, const TerminationCondition& stop, Plan& plan,
+                           std::vector<CellIndex>& unsafeCells) const {
+  const CellGrid& cells = ctx.cells;
+  const Point startPoint = *ctx.problem.robots.at(0).start;
+  auto t0 = Clock::now();
+  const int cols = cells.subCols(), rows = cells.subRows();
+  const std::size_t n = static_cast<std::size_t>(cols) * rows;
+  auto id = [&](CellIndex c) { return c.row * cols + c.col; };
+  auto cellOf = [&](int v) { return CellIndex{v % cols, v / cols}; };
+  enum : std::uint8_t { kUnknown = 0, kSafe = 1, kUnsafe = 2 };
+  std::vector<std::uint8_t> known(n, kUnknown), unreachable(n, 0);
+  std::vector<std::uint32_t> entries(n, 0);
+  CellSensor sensor(cells, s);
+  std::vector<CellIndex> walk;
+  auto arrive = [&](CellIndex c) {
+    walk.push_back(c);
+    ++entries[static_cast<std::size_t>(id(c))];
+    for (int d = 0; d < 4; ++d) {
+      const int nc = c.col + graph::kDx[d], nr = c.row + graph::kDy[d];
+      if (nc < 0 || nr < 0 || nc >= cols || nr >= rows) continue;
+      std::uint8_t& k = known[static_cast<std::size_t>(nr * cols + nc)];
+      if (k == kUnknown) k = sensor.neighbourFree(c, d) ? kSafe : kUnsafe;
+    }
+  };
+  auto moveTo = [&](CellIndex c) {
+    sensor.moveTo(c);
+    arrive(c);
+  };
+  known[static_cast<std::size_t>(id(s))] = kSafe;
+  arrive(s);
+
+  // the flow: boustrophedon over every row (or column), from the start's place in it onwards
+  const bool byRows = params.text("flow") == "rows";
+  std::vector<int> flow;
+  flow.reserve(n);
+  const int lines = byRows ? rows : cols, along = byRows ? cols : rows;
+  for (int l = 0; l < lines; ++l)
+    for (int k = 0; k < along; ++k) {
+      const int a = (l % 2 == 0) ? k : along - 1 - k;
+      flow.push_back(byRows ? l * cols + a : a * cols + l);
+    }
+  const std::size_t at = static_cast<std::size_t>(std::find(flow.begin(), flow.end(), id(s)) - flow.begin());
+
+  GridAStar astar(cols, rows);
+  std::vector<int> explored;
+  std::size_t detours = 0, replans = 0;
+  bool timedOut = false;
+  for (std::size_t k = 1; k < n && !timedOut; ++k) {
+    const int f = flow[(at + k) % n];
+    const auto fu = static_cast<std::size_t>(f);
+    if (entries[fu] || known[fu] == kUnsafe || unreachable[fu]) continue;
+    const CellIndex here = sensor.here(), target = cellOf(f);
+    if (known[fu] == kSafe && std::abs(here.col - target.col) + std::abs(here.row - target.row) == 1) {
+      moveTo(target);
+      continue;
+    }
+    // a detour (or the way to a flow cell that is not next to the robot)
+    ++detours;
+    while (!timedOut) {
+      timedOut = stop.expired();
+      const std::vector<int> path =
+          astar.search(f, id(sensor.here()), [&](int v) { return known[static_cast<std::size_t>(v)] != kUnsafe; }, explored);
+      if (path.empty()) {  // the target's side does not reach the robot: mark it once
+        for (int v : explored) unreachable[static_cast<std::size_t>(v)] = 1;
+        break;
+      }
+      bool blocked = false;
+      for (std::size_t i = 1; i < path.size(); ++i) {
+        if (known[static_cast<std::size_t>(path[i])] == kUnsafe) {  // sensed on the way: plan again
+          blocked = true;
+          ++replans;
+          break;
+        }
+        moveTo(cellOf(path[i]));
+      }
+      if (!blocked || known[fu] == kUnsafe) break;
+    }
+  }
+  plan.timings.emplace_back("walk", std::chrono::duration<double>(Clock::now() - t0).count());
+
+  // the end report, over the cells that meet the map's bounding box (the grid is padded to whole
+  // mega-cells; the padding is outside W and not reported)
+  const Box box = ctx.problem.workspace.bbox();
+  auto cellsIn = [&](const Rational& extent) {
+    const Rational q = extent / cells.subSize();
+    mpz_class whole = q.get_num() / q.get_den();
+    if (whole * q.get_den() != q.get_num()) whole += 1;  // ceil for positive q
+    return static_cast<int>(whole.get_si());
+  };
+  const int boxCols = std::min(cols, cellsIn(box.xmax - cells.originX())), boxRows = std::min(rows, cellsIn(box.ymax - cells.originY()));
+  std::size_t unsafe = 0, unchecked = 0, covered = 0, overlapped = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    covered += entries[v] > 0;
+    overlapped += entries[v] > 1;
+    if (static_cast<int>(v % static_cast<std::size_t>(cols)) >= boxCols || static_cast<int>(v / static_cast<std::size_t>(cols)) >= boxRows) continue;
+    unsafe += known[v] == kUnsafe;
+    unchecked += known[v] == kUnknown;
+  }
+  plan.statistics["unsafe_cells"] = static_cast<double>(unsafe);
+  plan.statistics["unchecked_cells"] = static_cast<double>(unchecked);
+  plan.statistics["covered_cells"] = static_cast<double>(covered);
+  plan.statistics["redundancy_rate"] = covered ? 100.0 * static_cast<double>(overlapped) / static_cast<double>(covered) : 0.0;
+  plan.statistics["detours"] = static_cast<double>(detours);
+  plan.statistics["replans"] = static_cast<double>(replans);
+  plan.statistics["astar_expansions"] = static_cast<double>(astar.expansions);
+  plan.statistics["sensor_queries"] = static_cast<double>(sensor.log().size());
+  plan.statistics["start_col"] = s.col;
+  plan.statistics["start_row"] = s.row;
+  plan.statistics["end_col"] = sensor.here().col;
+  plan.statistics["end_row"] = sensor.here().row;
+
+  auto t1 = Clock::now();
+  PlacedWalk placed = placeWalk(ctx, walk, startPoint, false);
+  unsafeCells = placed.unsafeCells;
+  plan.timings.emplace_back("path", std::chrono::duration<double>(Clock::now() - t1).count());
+  if (!placed.startClear) {
+    plan.status = PlanStatus::kInvalidStart;
+    plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
+    return;
+  }
+  plan.paths[0] = std::move(placed.path);
+  plan.statistics["moves_repaired"] = static_cast<double>(placed.repairedMoves);
+  plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);
+  if (timedOut) {
+    plan.status = PlanStatus::kTimeout;
+    plan.message = "time limit reached during the flow";
+  } else if (placed.unsafeMoves > 0) {
+    plan.status = PlanStatus::kPartialCoverage;
+    plan.message = std::to_string(placed.unsafeMoves) + " moves squeezed to exactly 2r have no exactly safe double coordinates";
+  } else {
+    plan.status = PlanStatus::kExactSolution;
+    plan.message = "entered every free sub-cell 4-connected to the start's; " + std::to_string(unsafe) + " unsafe cells, " +
+                   std::to_string(unchecked) + " never sensed (enclosed)";
+  }
+}
+
+}  // namespace coverkit::planners
