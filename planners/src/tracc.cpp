@@ -3,86 +3,18 @@
 #include <coverkit/planners/sensor.h>
 #include <coverkit/planners/tracc.h>
 
+#include "grid_astar.h"
 #include "walk_path.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
-#include <queue>
 
 namespace coverkit::planners {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// A* on the 4-connected sub-cell grid over cells not known to be unsafe, from `from` (the target)
-/// back to `to` (the robot); Manhattan heuristic; a binary heap with lazy deletion (a popped cell
-/// already closed is skipped: the open list is never rescanned or re-sorted). Per-search arrays are
-/// reset by a search stamp, not cleared.
-class GridAStar {
-public:
-  GridAStar(int cols, int rows) : cols_(cols), rows_(rows), stamp_(static_cast<std::size_t>(cols) * rows, 0),
-                                  closed_(stamp_.size(), 0), g_(stamp_.size(), 0), next_(stamp_.size(), -1) {}
-
-  /// Cells from `to` to `from` (both included), or empty; `explored` gets every closed cell.
-  template <class Passable>
-  std::vector<int> search(int from, int to, Passable passable, std::vector<int>& explored) {
-    ++search_;
-    explored.clear();
-    using Entry = std::tuple<long, long, int>;  // f, −g (deeper first on ties), cell
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-    const int tc = to % cols_, tr = to / cols_;
-    auto h = [&](int v) { return static_cast<long>(std::abs(v % cols_ - tc) + std::abs(v / cols_ - tr)); };
-    auto touch = [&](int v) {
-      if (stamp_[static_cast<std::size_t>(v)] != search_) {
-        stamp_[static_cast<std::size_t>(v)] = search_;
-        closed_[static_cast<std::size_t>(v)] = 0;
-        g_[static_cast<std::size_t>(v)] = -1;
-      }
-    };
-    touch(from);
-    g_[static_cast<std::size_t>(from)] = 0;
-    next_[static_cast<std::size_t>(from)] = -1;
-    open.emplace(h(from), 0, from);
-    while (!open.empty()) {
-      const auto [f, ng, v] = open.top();
-      open.pop();
-      if (closed_[static_cast<std::size_t>(v)]) continue;
-      closed_[static_cast<std::size_t>(v)] = 1;
-      explored.push_back(v);
-      ++expansions;
-      if (v == to) {
-        std::vector<int> path;
-        for (int u = to; u >= 0; u = next_[static_cast<std::size_t>(u)]) path.push_back(u);
-        return path;
-      }
-      const int c = v % cols_, r = v / cols_;
-      for (int d = 0; d < 4; ++d) {
-        const int nc = c + graph::kDx[d], nr = r + graph::kDy[d];
-        if (nc < 0 || nr < 0 || nc >= cols_ || nr >= rows_) continue;
-        const int u = nr * cols_ + nc;
-        if (u != to && !passable(u)) continue;
-        touch(u);
-        const long gu = g_[static_cast<std::size_t>(v)] + 1;
-        if (closed_[static_cast<std::size_t>(u)] || (g_[static_cast<std::size_t>(u)] >= 0 && g_[static_cast<std::size_t>(u)] <= gu)) continue;
-        g_[static_cast<std::size_t>(u)] = gu;
-        next_[static_cast<std::size_t>(u)] = v;
-        open.emplace(gu + h(u), -gu, u);
-      }
-    }
-    return {};
-  }
-  std::size_t expansions = 0;
-
-private:
-  int cols_, rows_;
-  unsigned search_ = 0;
-  std::vector<unsigned> stamp_;
-  std::vector<std::uint8_t> closed_;
-  std::vector<long> g_;
-  std::vector<int> next_;
-};
 
 }  // namespace
 
@@ -193,7 +125,7 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
     }
   const std::size_t at = static_cast<std::size_t>(std::find(flow.begin(), flow.end(), id(s)) - flow.begin());
 
-  GridAStar astar(cols, rows);
+  GridAStar astar(cols, rows, false);
   std::vector<int> explored;
   std::size_t detours = 0, replans = 0;
   bool timedOut = false;
@@ -210,8 +142,9 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
     ++detours;
     while (!timedOut) {
       timedOut = stop.expired();
+      // the search starts at the target: a failure has explored exactly the target's side
       const std::vector<int> path =
-          astar.search(f, id(sensor.here()), [&](int v) { return known[static_cast<std::size_t>(v)] != kUnsafe; }, explored);
+          astar.search(id(sensor.here()), f, [&](int v) { return known[static_cast<std::size_t>(v)] != kUnsafe; }, explored);
       if (path.empty()) {  // the target's side does not reach the robot: mark it once
         for (int v : explored) unreachable[static_cast<std::size_t>(v)] = 1;
         break;

@@ -91,13 +91,17 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
   if (walk.size() == 1) {
     point(var(true, walk[0].col), var(false, walk[0].row), walk[0]);
   } else {
+    // directions 0-3 as graph::Dir; 4-7 the diagonals NE, NW, SW, SE
+    static constexpr int kDiagX[4] = {1, -1, -1, 1}, kDiagY[4] = {1, 1, -1, -1};
     std::vector<int> dirs(walk.size() - 1);
     for (std::size_t k = 0; k + 1 < walk.size(); ++k) {
       const int dc = walk[k + 1].col - walk[k].col, dr = walk[k + 1].row - walk[k].row;
       int d = -1;
-      for (int e = 0; e < 4; ++e)
+      for (int e = 0; e < 4; ++e) {
         if (graph::kDx[e] == dc && graph::kDy[e] == dr) d = e;
-      if (d < 0) throw std::logic_error("placeWalk: consecutive sub-cells are not 4-adjacent");
+        if (kDiagX[e] == dc && kDiagY[e] == dr) d = 4 + e;
+      }
+      if (d < 0) throw std::logic_error("placeWalk: consecutive sub-cells are not adjacent");
       dirs[k] = d;
     }
     auto fixedVar = [&](int dir, CellIndex c) { return horizontal(dir) ? var(false, c.row) : var(true, c.col); };
@@ -109,11 +113,37 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
           if (!cells.insideSub(q, r) || cells.sub(q, r) != CellState::kFree) return true;
       return false;
     };
-    int runDir = dirs[0];
-    int fixed = fixedVar(runDir, walk[0]);
-    at(runDir, fixed, along(runDir, walk[0]), walk[0]);
+    // A diagonal move is a piece of its own between two points with coordinates of their own.
+    int runDir = -1, fixed = -1;  // the axis run under way (runDir < 0: the last piece was diagonal)
+    int px = -1, py = -1;         // after a diagonal: the variables of its end point
+    auto cornerPoint = [&](CellIndex c) {
+      px = var(true, c.col);
+      py = var(false, c.row);
+      point(px, py, c);
+    };
+    if (dirs[0] >= 4) {
+      cornerPoint(walk[0]);
+    } else {
+      runDir = dirs[0];
+      fixed = fixedVar(runDir, walk[0]);
+      at(runDir, fixed, along(runDir, walk[0]), walk[0]);
+    }
     for (std::size_t k = 1; k < dirs.size(); ++k) {
       const CellIndex t = walk[k];
+      if (runDir < 0) {  // the end of a diagonal
+        cornerPoint(t);
+        if (dirs[k] < 4) {
+          runDir = dirs[k];
+          fixed = horizontal(runDir) ? py : px;
+        }
+        continue;
+      }
+      if (dirs[k] >= 4) {  // a run ends where a diagonal begins
+        const int g = along(runDir, t);
+        at(runDir, fixed, g, t);
+        runDir = -1;
+        continue;
+      }
       if (dirs[k] == runDir && !nearObstacle(t)) continue;
       const int nextFixed = fixedVar(dirs[k], t);
       if (horizontal(dirs[k]) != horizontal(runDir)) {  // a turn: the corner takes both fixed coordinates
@@ -127,7 +157,8 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
       runDir = dirs[k];
       fixed = nextFixed;
     }
-    at(runDir, fixed, along(runDir, walk.back()), walk.back());
+    if (runDir < 0) cornerPoint(walk.back());
+    else at(runDir, fixed, along(runDir, walk.back()), walk.back());
   }
   if (backToStart) point(-1, -1, walk.back());
 

@@ -34,8 +34,9 @@ struct PlacedWalk {
   std::vector<CellIndex> unsafeCells;
 };
 
-/// `walk`: sub-cells, each 4-adjacent to the next (repeats allowed), beginning at the start's
-/// sub-cell (and, with `backToStart`, ending there: the path then returns to the start point).
+/// `walk`: sub-cells, each 4-adjacent to the next or diagonal to it with both side cells free
+/// (repeats allowed), beginning at the start's sub-cell (and, with `backToStart`, ending there: the
+/// path then returns to the start point). A diagonal move stays in its 2×2 block of free cells.
 /// Throws std::logic_error when two consecutive sub-cells are not adjacent.
 PlacedWalk placeWalk(const PlanningContext& context, const std::vector<CellIndex>& walk, const Point& start, bool backToStart = true);
 

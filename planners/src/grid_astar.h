@@ -1,0 +1,93 @@
+#pragma once
+// A* on the sub-cell grid (private to planners/): TRACC's 4-connected detours (Manhattan
+// heuristic) and BSA's 8-connected backtracking (octile heuristic, the BSA paper's equation (2):
+// h = D·(dx + dy) + (D2 − 2D)·min(dx, dy) with D = 1, D2 = √2). A diagonal step needs both side
+// cells passable, so a disc that fits a cell never clips a corner.
+//
+// The open list is a binary heap with lazy deletion: a cell popped again after it was closed is
+// skipped, so nothing is rescanned or re-sorted. Per-search arrays are reset by a stamp, not
+// cleared, so a search costs O(k log k) in the k cells it touches, not O(grid).
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <queue>
+#include <tuple>
+#include <vector>
+
+namespace coverkit::planners {
+
+class GridAStar {
+public:
+  GridAStar(int cols, int rows, bool eightConnected)
+      : cols_(cols), rows_(rows), eight_(eightConnected), stamp_(static_cast<std::size_t>(cols) * rows, 0),
+        closed_(stamp_.size(), 0), g_(stamp_.size(), 0.0), next_(stamp_.size(), -1) {}
+
+  /// Cells from `from` to `to` (both included) through cells where `passable(cell)` holds (`to`
+  /// itself need not), or empty when there is none. `explored` gets every cell closed.
+  template <class Passable>
+  std::vector<int> search(int from, int to, Passable passable, std::vector<int>& explored) {
+    ++search_;
+    explored.clear();
+    // search from `to` back to `from`: parents then point along the path from `from`
+    using Entry = std::tuple<double, double, int>;  // f, −g (deeper first on ties), cell
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    const int fc = from % cols_, fr = from / cols_;
+    auto h = [&](int v) {
+      const double dx = std::abs(v % cols_ - fc), dy = std::abs(v / cols_ - fr);
+      return eight_ ? (dx + dy) + (std::sqrt(2.0) - 2.0) * std::min(dx, dy) : dx + dy;
+    };
+    auto touch = [&](int v) {
+      if (stamp_[static_cast<std::size_t>(v)] != search_) {
+        stamp_[static_cast<std::size_t>(v)] = search_;
+        closed_[static_cast<std::size_t>(v)] = 0;
+        g_[static_cast<std::size_t>(v)] = -1;
+      }
+    };
+    auto ok = [&](int c, int r) { return c >= 0 && r >= 0 && c < cols_ && r < rows_ && (r * cols_ + c == from || passable(r * cols_ + c)); };
+    touch(to);
+    g_[static_cast<std::size_t>(to)] = 0;
+    next_[static_cast<std::size_t>(to)] = -1;
+    open.emplace(h(to), 0.0, to);
+    static constexpr int kX[8] = {1, 0, -1, 0, 1, -1, -1, 1}, kY[8] = {0, 1, 0, -1, 1, 1, -1, -1};
+    while (!open.empty()) {
+      const auto [f, ng, v] = open.top();
+      open.pop();
+      if (closed_[static_cast<std::size_t>(v)]) continue;
+      closed_[static_cast<std::size_t>(v)] = 1;
+      explored.push_back(v);
+      ++expansions;
+      if (v == from) {
+        std::vector<int> path;
+        for (int u = from; u >= 0; u = next_[static_cast<std::size_t>(u)]) path.push_back(u);
+        return path;
+      }
+      const int c = v % cols_, r = v / cols_;
+      for (int d = 0; d < (eight_ ? 8 : 4); ++d) {
+        const int nc = c + kX[d], nr = r + kY[d];
+        if (!ok(nc, nr)) continue;
+        if (d >= 4 && (!ok(nc, r) || !ok(c, nr))) continue;  // both side cells, or no diagonal
+        const int u = nr * cols_ + nc;
+        touch(u);
+        const double gu = g_[static_cast<std::size_t>(v)] + (d >= 4 ? std::sqrt(2.0) : 1.0);
+        if (closed_[static_cast<std::size_t>(u)] || (g_[static_cast<std::size_t>(u)] >= 0 && g_[static_cast<std::size_t>(u)] <= gu)) continue;
+        g_[static_cast<std::size_t>(u)] = gu;
+        next_[static_cast<std::size_t>(u)] = v;
+        open.emplace(gu + h(u), -gu, u);
+      }
+    }
+    return {};
+  }
+  std::size_t expansions = 0;
+
+private:
+  int cols_, rows_;
+  bool eight_;
+  unsigned search_ = 0;
+  std::vector<unsigned> stamp_;
+  std::vector<std::uint8_t> closed_;
+  std::vector<double> g_;
+  std::vector<int> next_;
+};
+
+}  // namespace coverkit::planners
