@@ -1,6 +1,7 @@
 // The coverkit command line: plan, evaluate, render, list, demo. Bad input: a message naming the
 // file, the place and the problem on stderr, exit code 2, no output file.
 #include "render.h"
+#include "paper_experiments.h"
 #include "runner.h"
 
 #include <coverkit/datasets/path_io.h>
@@ -288,6 +289,17 @@ int main(int argc, char** argv) {
   demo->add_option("--data", dataDir, "folder with scenarios.txt and the maps it names (default: the built-in data)");
   demo->add_flag("--quiet", quiet, "no summary line");
 
+  std::string experimentName, experimentOut = "coverkit-experiment";
+  experiments::BsaExperimentOptions bsaOptions;
+  auto* experiment = app.add_subcommand("experiment", "reproduce a paper's experiment (bsa-backtracking): CSV, table, chart");
+  experiment->add_option("name", experimentName, "the experiment: bsa-backtracking")->required();
+  experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
+  experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (default 100)");
+  experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
+  experiment->add_option("--density", bsaOptions.density, "fraction of blocked cells (default 0.05)");
+  std::string obstacleKind = "clustered";
+  experiment->add_option("--obstacles", obstacleKind, "clustered (blobs, default) or scattered (single cells)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -406,6 +418,16 @@ int main(int argc, char** argv) {
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);
       return v.valid ? 0 : 1;
+    }
+    if (*experiment) {
+      if (experimentName != "bsa-backtracking")
+        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking)");
+      if (obstacleKind != "clustered" && obstacleKind != "scattered")
+        throw InputError("--obstacles", obstacleKind, "must be clustered or scattered");
+      bsaOptions.clustered = obstacleKind == "clustered";
+      std::cout << experiments::runBsaExperiment(bsaOptions, experimentOut) << "written: " << experimentOut
+                << "/results.csv, summary.md, backtracking.svg\n";
+      return 0;
     }
     if (*render) {
       experiments::checkPictureName(out);

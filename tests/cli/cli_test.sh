@@ -109,5 +109,16 @@ JSON
 [ $rc -eq 1 ] && grep -q '"valid": false' "$T/cut.out" && grep -q '"kind": "clearance"' "$T/cut.out" && ok || bad "cut path not caught (rc $rc)"
 "$CK" evaluate --map "$T/room.wkt" --path "$T/cut.json" --json --cspace | grep -q '"kind": "cspace"' && ok || bad "cut path not caught by the C-space check"
 
+# the BSA paper's experiment: one command, CSV + table + chart; bad options leave no folder
+"$CK" experiment bsa-backtracking --seeds 3 --out "$T/bsa" > "$T/bsa.out" && [ "$(grep -c ',1,' "$T/bsa/results.csv")" -eq 6 ] && grep -q '| backtracks' "$T/bsa/summary.md" && grep -q '<svg' "$T/bsa/backtracking.svg" && ok || bad "bsa experiment: $(head -c 300 "$T/bsa.out")"
+"$CK" experiment bsa-backtracking --seeds 3 --out "$T/bsa2" > /dev/null && cmp -s "$T/bsa/results.csv" "$T/bsa2/results.csv" && ok || bad "bsa experiment not deterministic"
+expect_bad "unknown experiment" "experiment: nope: unknown experiment" experiment nope --out "$T/out.json"
+expect_bad "experiment seeds 0" "--seeds: 0: must be at least 1" experiment bsa-backtracking --seeds 0 --out "$T/out.json"
+expect_bad "experiment obstacles" "--obstacles: blobs: must be clustered or scattered" experiment bsa-backtracking --obstacles blobs --out "$T/out.json"
+# the grid-rail planners on a map, end to end
+for p in tracc bsa_zigzag full_stc; do
+  "$CK" plan --planner $p --radius 0.125 --map "$DATA/rooms.grid" --out "$T/$p.json" > /dev/null && "$CK" evaluate --map "$DATA/rooms.grid" --radius 0.125 --path "$T/$p.json" --json | grep -q '"valid": true' && ok || bad "$p on rooms.grid"
+done
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

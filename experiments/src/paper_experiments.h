@@ -1,0 +1,19 @@
+#pragma once
+// The papers' experiments, one function each (the `coverkit experiment NAME` command).
+#include <cstdint>
+#include <string>
+
+namespace coverkit::experiments {
+
+/// BSA paper, section 3: 30×30 grid maps with random obstacles, start S(0, 0), spiral against
+/// zigzag filling, over many seeds. Writes OUT/results.csv (one row per seed and filling),
+/// OUT/summary.md (the table) and OUT/backtracking.svg (the distributions). Returns the summary.
+struct BsaExperimentOptions {
+  int seeds = 100;
+  int size = 30;
+  double density = 0.05;  ///< fraction of blocked cells aimed at
+  bool clustered = true;  ///< blobs (as the paper's figures) or scattered single cells
+};
+std::string runBsaExperiment(const BsaExperimentOptions& options, const std::string& outDir);
+
+}  // namespace coverkit::experiments
