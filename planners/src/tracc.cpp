@@ -113,24 +113,35 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
   known[static_cast<std::size_t>(id(s))] = kSafe;
   arrive(s);
 
+  // the cells that meet the map's bounding box: the grid is padded to whole mega-cells, and the
+  // padding (outside W) is neither in the flow nor in the report
+  const Box box = ctx.problem.workspace.bbox();
+  auto cellsIn = [&](const Rational& extent) {
+    const Rational q = extent / cells.subSize();
+    mpz_class whole = q.get_num() / q.get_den();
+    if (whole * q.get_den() != q.get_num()) whole += 1;  // ceil for positive q
+    return static_cast<int>(whole.get_si());
+  };
+  const int boxCols = std::min(cols, cellsIn(box.xmax - cells.originX())), boxRows = std::min(rows, cellsIn(box.ymax - cells.originY()));
   // the flow: boustrophedon over every row (or column), from the start's place in it onwards
   const bool byRows = params.text("flow") == "rows";
   std::vector<int> flow;
-  flow.reserve(n);
-  const int lines = byRows ? rows : cols, along = byRows ? cols : rows;
+  flow.reserve(static_cast<std::size_t>(boxCols) * static_cast<std::size_t>(boxRows));
+  const int lines = byRows ? boxRows : boxCols, along = byRows ? boxCols : boxRows;
   for (int l = 0; l < lines; ++l)
     for (int k = 0; k < along; ++k) {
       const int a = (l % 2 == 0) ? k : along - 1 - k;
       flow.push_back(byRows ? l * cols + a : a * cols + l);
     }
   const std::size_t at = static_cast<std::size_t>(std::find(flow.begin(), flow.end(), id(s)) - flow.begin());
+  const std::size_t nFlow = flow.size();
 
   GridAStar astar(cols, rows, false);
   std::vector<int> explored;
   std::size_t detours = 0, replans = 0;
   bool timedOut = false;
-  for (std::size_t k = 1; k < n && !timedOut; ++k) {
-    const int f = flow[(at + k) % n];
+  for (std::size_t k = 1; k < nFlow && !timedOut; ++k) {
+    const int f = flow[(at + k) % nFlow];
     const auto fu = static_cast<std::size_t>(f);
     if (entries[fu] || known[fu] == kUnsafe || unreachable[fu]) continue;
     const CellIndex here = sensor.here(), target = cellOf(f);
@@ -161,22 +172,30 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
       if (!blocked || known[fu] == kUnsafe) break;
     }
   }
+  // STEP2 of Table 2: every unchecked cell with a safe neighbour is visited. With a flow over every
+  // row there is none left (a safe cell is reachable, so it was entered and its neighbours sensed);
+  // the loop stays as the paper's end phase and its count is reported.
+  std::size_t endVisits = 0;
+  for (std::size_t v = 0; v < n && !timedOut; ++v) {
+    if (known[v] != kUnknown) continue;
+    const CellIndex c = cellOf(static_cast<int>(v));
+    for (int d = 0; d < 4; ++d) {
+      const int nc = c.col + graph::kDx[d], nr = c.row + graph::kDy[d];
+      if (nc < 0 || nr < 0 || nc >= cols || nr >= rows || known[static_cast<std::size_t>(nr * cols + nc)] != kSafe) continue;
+      const std::vector<int> path = astar.search(id(sensor.here()), nr * cols + nc, [&](int u) { return known[static_cast<std::size_t>(u)] == kSafe; }, explored);
+      for (std::size_t i = 1; i < path.size(); ++i) moveTo(cellOf(path[i]));
+      ++endVisits;
+      break;
+    }
+  }
   plan.timings.emplace_back("walk", std::chrono::duration<double>(Clock::now() - t0).count());
 
-  // the end report, over the cells that meet the map's bounding box (the grid is padded to whole
-  // mega-cells; the padding is outside W and not reported)
-  const Box box = ctx.problem.workspace.bbox();
-  auto cellsIn = [&](const Rational& extent) {
-    const Rational q = extent / cells.subSize();
-    mpz_class whole = q.get_num() / q.get_den();
-    if (whole * q.get_den() != q.get_num()) whole += 1;  // ceil for positive q
-    return static_cast<int>(whole.get_si());
-  };
-  const int boxCols = std::min(cols, cellsIn(box.xmax - cells.originX())), boxRows = std::min(rows, cellsIn(box.ymax - cells.originY()));
-  std::size_t unsafe = 0, unchecked = 0, covered = 0, overlapped = 0;
+  // the end report, over the cells that meet the map's bounding box
+  std::size_t unsafe = 0, unchecked = 0, covered = 0, overlapped = 0, unreachedFree = 0;
   for (std::size_t v = 0; v < n; ++v) {
     covered += entries[v] > 0;
     overlapped += entries[v] > 1;
+    unreachedFree += entries[v] == 0 && cells.sub(static_cast<int>(v % static_cast<std::size_t>(cols)), static_cast<int>(v / static_cast<std::size_t>(cols))) == CellState::kFree;
     if (static_cast<int>(v % static_cast<std::size_t>(cols)) >= boxCols || static_cast<int>(v / static_cast<std::size_t>(cols)) >= boxRows) continue;
     unsafe += known[v] == kUnsafe;
     unchecked += known[v] == kUnknown;
@@ -184,6 +203,8 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
   plan.statistics["unsafe_cells"] = static_cast<double>(unsafe);
   plan.statistics["unchecked_cells"] = static_cast<double>(unchecked);
   plan.statistics["covered_cells"] = static_cast<double>(covered);
+  plan.statistics["end_phase_visits"] = static_cast<double>(endVisits);
+  plan.statistics["unreached_free_cells"] = static_cast<double>(unreachedFree);  // ground truth: enclosed free cells
   plan.statistics["redundancy_rate"] = covered ? 100.0 * static_cast<double>(overlapped) / static_cast<double>(covered) : 0.0;
   plan.statistics["detours"] = static_cast<double>(detours);
   plan.statistics["replans"] = static_cast<double>(replans);

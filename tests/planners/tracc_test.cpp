@@ -48,6 +48,8 @@ TEST(Tracc, PaperScenarioOne) {
   EXPECT_EQ(plan.statistics.at("unsafe_cells"), 5.0);
   EXPECT_EQ(plan.statistics.at("unchecked_cells"), 1.0);  // C41, never sensed: enclosed
   EXPECT_EQ(plan.statistics.at("covered_cells"), 115.0);
+  EXPECT_EQ(plan.statistics.at("unreached_free_cells"), 1.0);  // C41 is free but walled in
+  EXPECT_EQ(plan.statistics.at("end_phase_visits"), 0.0);      // the flow over every row left none
   // the paper's detour around C5: C4 => C15 => C16 => C17 => C6
   const auto cells = cellsOf(ctx, plan);
   std::vector<CellIndex> detour;
@@ -64,6 +66,7 @@ TEST(Tracc, PaperScenarioTwoReportsEnclosedCells) {
   EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, plan));
   EXPECT_EQ(plan.statistics.at("unchecked_cells"), 2.0);  // C60 (inside the ring) and C121
   EXPECT_EQ(plan.statistics.at("unsafe_cells"), 10.0);
+  EXPECT_EQ(plan.statistics.at("unreached_free_cells"), 2.0);
 }
 
 TEST(Tracc, OnlineCompleteAndDeterministicOnSeededMaps) {
