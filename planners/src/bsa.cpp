@@ -1,5 +1,4 @@
 // BSA with A* backtracking. See bsa.h for the reference and the decisions.
-#include <coverkit/geometry/error.h>
 #include <coverkit/graph/grid_graph.h>
 #include <coverkit/planners/bsa.h>
 
@@ -99,37 +98,19 @@ Capabilities BsaPlanner::capabilities() const {
   return c;
 }
 
-Plan BsaPlanner::plan(const PlanningContext& ctx0, const ParamSet& params, const TerminationCondition& stop) {
+Plan BsaPlanner::plan(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop) {
   Plan plan;
   plan.planner = name();
-  const Robot& robot = ctx0.problem.robots.at(0);
-  if (ctx0.cells.subSize() < 2 * robot.radius)
-    throw InputError("--cell-size", formatDouble(ctx0.cells.subSizeD()),
-                     "must be at least 2r = " + formatDouble(Rational(2 * robot.radius).get_d()) + " for " + name() +
-                         " (the disc must fit in its cell)");
-  plan.paths.emplace_back();
-  if (!robot.start) {
-    plan.status = PlanStatus::kNoFreeSpace;
-    plan.message = "no free sub-cell for a default start";
-    return plan;
-  }
-  const Point startPoint = *robot.start;
-  plan.paths[0].start = {toDouble(startPoint.x), toDouble(startPoint.y)};
+  Point startPoint;
   CellIndex s;
-  if (!ctx0.cells.locateSub(startPoint, s) || ctx0.cells.sub(s.col, s.row) != CellState::kFree) {
-    plan.status = PlanStatus::kInvalidStart;
-    plan.message = "the start is not in a free sub-cell";
-    return plan;
-  }
+  if (!beginOnCells(context, name(), true, plan, startPoint, s)) return plan;
   const int side = params.all().count("side") && params.text("side") == "right" ? -1 : 1;
   const int first = params.all().count("first") ? directionIndex(params.text("first")) : 1;
 
   // As for the STC family: sub-cells no double path can cross are left out and the plan made again.
-  PlanningContext reduced;
-  const PlanningContext* use = &ctx0;
-  std::size_t leftOut = 0;
-  for (int attempt = 0;; ++attempt) {
-    const PlanningContext& ctx = *use;
+  bool timedOut = false;
+  std::size_t pointsRecorded = 0;
+  const bool unsafe = withoutUnplaceableCells(context, s, plan, [&](const PlanningContext& ctx) -> std::vector<CellIndex> {
     const CellGrid& cells = ctx.cells;
     const auto t0 = Clock::now();
     const int cols = cells.subCols(), rows = cells.subRows();
@@ -138,7 +119,8 @@ Plan BsaPlanner::plan(const PlanningContext& ctx0, const ParamSet& params, const
     std::vector<std::uint8_t> visited(n, 0), recorded(n, 0);
     std::vector<CellIndex> walk;
     PointIndex points(cols, rows);
-    std::size_t pointsRecorded = 0, backtracks = 0, travelMoves = 0, fillMoves = 0;
+    std::size_t backtracks = 0, travelMoves = 0, fillMoves = 0;
+    pointsRecorded = 0;
     auto idx = [&](int c, int r) { return static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c); };
     auto freeNew = [&](CellIndex c, int d) {
       const int nc = c.col + graph::kDx[d], nr = c.row + graph::kDy[d];
@@ -162,7 +144,6 @@ Plan BsaPlanner::plan(const PlanningContext& ctx0, const ParamSet& params, const
     int heading = filling_ == Filling::kSpiral ? 0 : first;
     GridAStar astar(cols, rows, true);
     std::vector<int> explored;
-    bool timedOut = false;
     while (!timedOut) {
       // filling
       while (hasFreeNew(cur)) {  // rule 1 ends it
@@ -215,7 +196,6 @@ Plan BsaPlanner::plan(const PlanningContext& ctx0, const ParamSet& params, const
 
     std::size_t covered = 0;
     for (std::size_t v = 0; v < n; ++v) covered += visited[v];
-    plan.statistics = {};
     plan.statistics["backtracking_points"] = static_cast<double>(pointsRecorded);
     plan.statistics["backtracks"] = static_cast<double>(backtracks);
     plan.statistics["filling_moves"] = static_cast<double>(fillMoves);
@@ -230,36 +210,28 @@ Plan BsaPlanner::plan(const PlanningContext& ctx0, const ParamSet& params, const
     const auto t1 = Clock::now();
     PlacedWalk placed = placeWalk(ctx, walk, startPoint, false);
     plan.timings.emplace_back("path", std::chrono::duration<double>(Clock::now() - t1).count());
+    plan.statistics["moves_repaired"] = static_cast<double>(placed.repairedMoves);
+    plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);
     if (!placed.startClear) {
       plan.status = PlanStatus::kInvalidStart;
       plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
-      return plan;
+      return {};
     }
     plan.paths[0] = std::move(placed.path);
-    plan.statistics["moves_repaired"] = static_cast<double>(placed.repairedMoves);
-    plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);
-    plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
-    plan.statistics["attempts"] = attempt + 1;
-    if (timedOut) {
-      plan.status = PlanStatus::kTimeout;
-      plan.message = "time limit reached";
-      return plan;
-    }
-    if (placed.unsafeCells.empty() || attempt == 8) {
-      plan.status = placed.unsafeCells.empty() ? PlanStatus::kExactSolution : PlanStatus::kPartialCoverage;
-      plan.message = placed.unsafeCells.empty() ? "visited every free sub-cell 4-connected to the start's; " + std::to_string(pointsRecorded) +
-                                                      " backtracking points"
-                                                : std::to_string(placed.unsafeMoves) + " moves have no exactly safe double coordinates";
-      return plan;
-    }
-    if (use == &ctx0) reduced = ctx0;
-    for (CellIndex c : placed.unsafeCells)
-      if (reduced.cells.sub(c.col, c.row) == CellState::kFree && !(c == s)) {
-        ++leftOut;
-        reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
-      }
-    use = &reduced;
+    plan.status = PlanStatus::kExactSolution;
+    return timedOut ? std::vector<CellIndex>{} : placed.unsafeCells;
+  });
+  if (plan.status == PlanStatus::kInvalidStart) return plan;
+  if (timedOut) {
+    plan.status = PlanStatus::kTimeout;
+    plan.message = "time limit reached";
+  } else if (unsafe) {
+    plan.status = PlanStatus::kPartialCoverage;
+    plan.message = formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
+  } else {
+    plan.message = "visited every free sub-cell 4-connected to the start's; " + std::to_string(pointsRecorded) + " backtracking points";
   }
+  return plan;
 }
 
 }  // namespace coverkit::planners

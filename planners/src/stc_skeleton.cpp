@@ -87,49 +87,23 @@ std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, c
 Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition&) {
   Plan plan;
   plan.planner = name();
-  const CellGrid& cells = ctx.cells;
-  const Robot& robot = ctx.problem.robots.at(0);
-  if (cells.subSize() < 2 * robot.radius)
-    throw InputError("--cell-size", formatDouble(cells.subSizeD()),
-                     "must be at least 2r = " + formatDouble(Rational(2 * robot.radius).get_d()) + " for " + name() +
-                         " (the disc must fit in its sub-cell)");
-  Path path;
-  if (!robot.start) {
-    plan.status = PlanStatus::kNoFreeSpace;
-    plan.message = "no free sub-cell for a default start";
-    plan.paths.push_back(path);
-    return plan;
-  }
-  const Point start = *robot.start;
-  path.start = {toDouble(start.x), toDouble(start.y)};
-  plan.paths.push_back(path);
-
+  Point start;
+  CellIndex s;
+  if (!beginOnCells(ctx, name(), false, plan, start, s)) return plan;
   // A move that no double can make safe (a sub-cell squeezed to exactly 2r between obstacles, at a
   // centre that is not a double) leaves its sub-cells out: plan again without them (walk_path.h).
-  PlanningContext reduced;
-  const PlanningContext* use = &ctx;
-  std::size_t leftOut = 0;
-  std::vector<CellIndex> unsafe;
-  for (int attempt = 0;; ++attempt) {
-    const Outcome o = planOnce(*use, params, start, plan, unsafe);
-    if (o != Outcome::kUnsafe || attempt == 8) {
-      plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
-      plan.statistics["attempts"] = attempt + 1;
-      if (o == Outcome::kUnsafe) {
-        plan.status = PlanStatus::kPartialCoverage;
-        plan.message += "; " + formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
-      }
-      return plan;
-    }
-    if (use == &ctx) reduced = ctx;
-    for (CellIndex c : unsafe) {
-      if (reduced.cells.sub(c.col, c.row) == CellState::kFree) ++leftOut;
-      reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
-    }
-    use = &reduced;
+  const bool unsafe = withoutUnplaceableCells(ctx, s, plan, [&](const PlanningContext& c) {
+    std::vector<CellIndex> cellsToBlame;
     plan.treeEdges.clear();
     plan.timings.clear();
+    planOnce(c, params, start, plan, cellsToBlame);
+    return cellsToBlame;
+  });
+  if (unsafe) {
+    plan.status = PlanStatus::kPartialCoverage;
+    plan.message += "; " + formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
   }
+  return plan;
 }
 
 StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const ParamSet& params, const Point& start, Plan& plan,

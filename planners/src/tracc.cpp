@@ -1,5 +1,4 @@
 // TRACC. See tracc.h for the reference and the decisions.
-#include <coverkit/geometry/error.h>
 #include <coverkit/planners/sensor.h>
 #include <coverkit/planners/tracc.h>
 
@@ -38,48 +37,18 @@ Capabilities TraccPlanner::capabilities() const {
 Plan TraccPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition& stop) {
   Plan plan;
   plan.planner = name();
-  const CellGrid& cells = ctx.cells;
-  const Robot& robot = ctx.problem.robots.at(0);
-  if (cells.subSize() < 2 * robot.radius)
-    throw InputError("--cell-size", formatDouble(cells.subSizeD()),
-                     "must be at least 2r = " + formatDouble(Rational(2 * robot.radius).get_d()) + " for " + name() +
-                         " (the disc must fit in its cell)");
-  plan.paths.emplace_back();
-  if (!robot.start) {
-    plan.status = PlanStatus::kNoFreeSpace;
-    plan.message = "no free sub-cell for a default start";
-    return plan;
-  }
-  const Point startPoint = *robot.start;
-  plan.paths[0].start = {toDouble(startPoint.x), toDouble(startPoint.y)};
+  Point start;
   CellIndex s;
-  if (!cells.locateSub(startPoint, s) || cells.sub(s.col, s.row) != CellState::kFree) {
-    plan.status = PlanStatus::kInvalidStart;
-    plan.message = "the start is not in a free sub-cell";
-    return plan;
-  }
+  if (!beginOnCells(ctx, name(), true, plan, start, s)) return plan;
   // Sub-cells squeezed to exactly 2r at a centre that is not a double cannot be crossed by any
   // double path (walk_path.h): the run is made again with them blocked, as the STC family does.
-  PlanningContext reduced;
-  const PlanningContext* use = &ctx;
-  std::size_t leftOut = 0;
-  for (int attempt = 0;; ++attempt) {
+  withoutUnplaceableCells(ctx, s, plan, [&](const PlanningContext& c) {
     std::vector<CellIndex> unsafeCells;
-    runOnce(*use, s, params, stop, plan, unsafeCells);
-    if (unsafeCells.empty() || attempt == 8) {
-      plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
-      return plan;
-    }
-    if (use == &ctx) reduced = ctx;
-    for (CellIndex c : unsafeCells) {
-      if (reduced.cells.sub(c.col, c.row) == CellState::kFree && !(c == s)) {
-        ++leftOut;
-        reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
-      }
-    }
-    use = &reduced;
     plan.timings.clear();
-  }
+    runOnce(c, s, params, stop, plan, unsafeCells);
+    return unsafeCells;
+  });
+  return plan;
 }
 
 void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamSet& params, const TerminationCondition& stop, Plan& plan,

@@ -1,6 +1,7 @@
 // See walk_path.h.
 #include "walk_path.h"
 
+#include <coverkit/geometry/error.h>
 #include <coverkit/geometry/validate.h>
 #include <coverkit/graph/grid_graph.h>
 
@@ -339,6 +340,51 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
     path.segments.push_back(PathSegment::line(a, b));
   }
   return out;
+}
+
+bool beginOnCells(const PlanningContext& ctx, const std::string& planner, bool needFreeCell, Plan& plan, Point& start, CellIndex& startCell) {
+  const Robot& robot = ctx.problem.robots.at(0);
+  if (ctx.cells.subSize() < 2 * robot.radius)
+    throw InputError("--cell-size", formatDouble(ctx.cells.subSizeD()),
+                     "must be at least 2r = " + formatDouble(Rational(2 * robot.radius).get_d()) + " for " + planner +
+                         " (the disc must fit in its sub-cell)");
+  plan.paths.emplace_back();
+  if (!robot.start) {
+    plan.status = PlanStatus::kNoFreeSpace;
+    plan.message = "no free sub-cell for a default start";
+    return false;
+  }
+  start = *robot.start;
+  plan.paths[0].start = {toDouble(start.x), toDouble(start.y)};
+  const bool located = ctx.cells.locateSub(start, startCell);
+  if (!located || (needFreeCell && ctx.cells.sub(startCell.col, startCell.row) != CellState::kFree)) {
+    plan.status = PlanStatus::kInvalidStart;
+    plan.message = "the start is not in a free sub-cell";
+    return false;
+  }
+  return true;
+}
+
+bool withoutUnplaceableCells(const PlanningContext& ctx, CellIndex keep, Plan& plan,
+                             const std::function<std::vector<CellIndex>(const PlanningContext&)>& attempt) {
+  PlanningContext reduced;
+  const PlanningContext* use = &ctx;
+  std::size_t leftOut = 0;
+  for (int k = 0;; ++k) {
+    const std::vector<CellIndex> unsafe = attempt(*use);
+    if (unsafe.empty() || k == 8) {
+      plan.statistics["subcells_left_out"] = static_cast<double>(leftOut);
+      plan.statistics["attempts"] = k + 1;
+      return !unsafe.empty();
+    }
+    if (use == &ctx) reduced = ctx;
+    for (CellIndex c : unsafe)
+      if (reduced.cells.sub(c.col, c.row) == CellState::kFree && !(c == keep)) {
+        ++leftOut;
+        reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
+      }
+    use = &reduced;
+  }
 }
 
 }  // namespace coverkit::planners

@@ -20,6 +20,8 @@
 // sub-cells out (StcSkeleton::plan).
 #include <coverkit/planners/planner.h>
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace coverkit::planners {
@@ -39,5 +41,19 @@ struct PlacedWalk {
 /// path then returns to the start point). A diagonal move stays in its 2×2 block of free cells.
 /// Throws std::logic_error when two consecutive sub-cells are not adjacent.
 PlacedWalk placeWalk(const PlanningContext& context, const std::vector<CellIndex>& walk, const Point& start, bool backToStart = true);
+
+/// The common start of a planner on the sub-cell grid: throws InputError when a sub-cell cannot hold
+/// the disc (D < 2r). Adds the plan's path and returns true with the start point and its sub-cell;
+/// or sets the status (no free space; invalid start when `needFreeCell` and the start's sub-cell is
+/// not free) and returns false.
+bool beginOnCells(const PlanningContext& context, const std::string& planner, bool needFreeCell, Plan& plan, Point& start,
+                  CellIndex& startCell);
+
+/// Runs `attempt` and, while it returns sub-cells that no double path can cross (PlacedWalk::
+/// unsafeCells), runs it again on a copy of the context with those blocked (never `keep`), at most
+/// nine times. Sets the statistics "subcells_left_out" and "attempts"; returns true when the last
+/// attempt still had such sub-cells.
+bool withoutUnplaceableCells(const PlanningContext& context, CellIndex keep, Plan& plan,
+                             const std::function<std::vector<CellIndex>(const PlanningContext&)>& attempt);
 
 }  // namespace coverkit::planners
