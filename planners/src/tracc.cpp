@@ -205,7 +205,7 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
   } else {
     plan.status = PlanStatus::kExactSolution;
     plan.message = "entered every free sub-cell 4-connected to the start's; " + std::to_string(unsafe) + " unsafe cells, " +
-                   std::to_string(unchecked) + " never sensed (enclosed)";
+                   std::to_string(unchecked) + " never sensed (inside obstacles, outside W or enclosed), " + std::to_string(unreachedFree) + " free cells unreached";
   }
 }
 

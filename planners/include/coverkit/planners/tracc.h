@@ -17,8 +17,9 @@
 //  - The paper's flow visits every other row, its sensing covering the rows between. A disc robot
 //    must sweep, so the flow visits every row; every flow cell not yet visited is a target.
 //    Reachable free cells are therefore all entered, and the end phase of Table 2 (unchecked cells
-//    with a safe neighbour) has nothing left to visit: it reports the unsafe cells and the cells never
-//    sensed, which lie in enclosed areas.
+//    with a safe neighbour) has nothing left to visit (it runs, and counts its visits): the report
+//    gives the unsafe cells, the cells never sensed (inside obstacles, outside W or walled in) and,
+//    for evaluation, the free cells never reached.
 //  - A* searches from the target back to the robot, so a failed search has explored exactly the
 //    target's side: those cells are marked unreachable once and never searched again (O(N log N)).
 //  - Redundancy rate: the formula says R = U/C with U "uncovered cells", the text "the ratio of the
