@@ -214,7 +214,7 @@ Plan BsaPlanner::plan(const PlanningContext& context, const ParamSet& params, co
     plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);
     if (!placed.startClear) {
       plan.status = PlanStatus::kInvalidStart;
-      plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
+      plan.message = "no double start point near the start is clear (its sub-cell is squeezed to exactly 2r at a centre that is not a double), or the disc cannot move straight from the start to the centre of its sub-cell";
       return {};
     }
     plan.paths[0] = std::move(placed.path);

@@ -144,7 +144,7 @@ StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const Par
   PlacedWalk placed = placeWalk(ctx, walk, start);
   if (!placed.startClear) {
     plan.status = PlanStatus::kInvalidStart;
-    plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
+    plan.message = "no double start point near the start is clear (its sub-cell is squeezed to exactly 2r at a centre that is not a double), or the disc cannot move straight from the start to the centre of its sub-cell";
     return Outcome::kDone;
   }
   plan.paths[0] = std::move(placed.path);

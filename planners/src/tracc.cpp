@@ -190,7 +190,7 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
   plan.timings.emplace_back("path", std::chrono::duration<double>(Clock::now() - t1).count());
   if (!placed.startClear) {
     plan.status = PlanStatus::kInvalidStart;
-    plan.message = "the disc cannot move straight from the start to the centre of its sub-cell";
+    plan.message = "no double start point near the start is clear (its sub-cell is squeezed to exactly 2r at a centre that is not a double), or the disc cannot move straight from the start to the centre of its sub-cell";
     return;
   }
   plan.paths[0] = std::move(placed.path);

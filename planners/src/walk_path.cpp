@@ -164,7 +164,10 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
   if (backToStart) point(-1, -1, walk.back());
 
   PlacedWalk out;
-  const PointD s0{toDouble(start.x), toDouble(start.y)};
+  // The start point as doubles: the nearest, or a neighbouring double (one ulp, well within the
+  // validator's start tolerance) when the nearest puts the disc into an obstacle that touches the
+  // exact start's disc; chosen below by the exact test of the move to the first waypoint.
+  PointD s0{toDouble(start.x), toDouble(start.y)};
   auto value = [&](int v) {
     const Var& w = vars[static_cast<std::size_t>(v)];
     return (w.isX ? colC : rowC)[static_cast<std::size_t>(w.index)].v[w.pick];
@@ -303,7 +306,20 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
   };
   for (std::size_t k : failing) {
     if (clear(k)) continue;
-    if (k == 0) {
+    if (k == 0) {  // try the start's neighbouring doubles before giving up
+      const PointD nearest = s0;
+      bool found = false;
+      for (int dx = -1; dx <= 1 && !found; ++dx)
+        for (int dy = -1; dy <= 1 && !found; ++dy) {
+          if (dx == 0 && dy == 0) continue;
+          s0 = {dx == 0 ? nearest.x : std::nextafter(nearest.x, dx * HUGE_VAL), dy == 0 ? nearest.y : std::nextafter(nearest.y, dy * HUGE_VAL)};
+          found = clear(0) && (pts.back().xv >= 0 || clear(nSeg - 1));
+        }
+      if (found) {
+        ++out.repairedMoves;
+        continue;
+      }
+      s0 = nearest;
       out.startClear = false;
       continue;
     }

@@ -22,6 +22,8 @@ std::vector<char> enteredSubcells(const CellGrid& cells, const Plan& plan) {
   std::vector<char> seen(cells.subCount(), 0);
   const double D = cells.subSizeD();
   for (const Path& p : plan.paths) {
+    CellIndex c0;
+    if (cells.locateSubD(p.start, c0)) seen[static_cast<std::size_t>(c0.row) * cells.subCols() + c0.col] = 1;  // a robot that stays put
     const auto pts = p.polyline(D / 100);
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
       const double len = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
@@ -76,25 +78,28 @@ std::vector<char> flood(const CellGrid& cells, CellIndex s, Ok ok) {
   return ::testing::AssertionSuccess();
 }
 
+bool squeezedSubcell(const planners::PlanningContext& ctx, CellIndex c) {
+  const CellGrid& cells = ctx.cells;
+  auto isFree = [&](int q, int r) { return cells.insideSub(q, r) && cells.sub(q, r) == CellState::kFree; };
+  // exactly 2r wide between cells that are not free (on both sides of one axis, within the 3×3
+  // block around it), at a centre coordinate that is not a double: no double is safe there
+  if (cells.subSize() != 2 * ctx.problem.robots[0].radius) return false;
+  auto blockedSide = [&](int dc, int dr) {
+    for (int k = -1; k <= 1; ++k)
+      if (!isFree(c.col + dc + k * dr, c.row + dr + k * dc)) return true;
+    return false;
+  };
+  const Point p = cells.subCenter(c.col, c.row);
+  return (exactFromDouble(toDouble(p.x)) != p.x && blockedSide(-1, 0) && blockedSide(1, 0)) ||
+         (exactFromDouble(toDouble(p.y)) != p.y && blockedSide(0, -1) && blockedSide(0, 1));
+}
+
 ::testing::AssertionResult coversReachableSubcells(const planners::PlanningContext& ctx, const Plan& plan) {
   const CellGrid& cells = ctx.cells;
   CellIndex s;
   if (!cells.locateSub(*ctx.problem.robots[0].start, s)) return ::testing::AssertionFailure() << "start outside the grid";
   auto isFree = [&](int c, int r) { return cells.insideSub(c, r) && cells.sub(c, r) == CellState::kFree; };
-  // squeezed: exactly 2r wide between cells that are not free (on both sides of one axis, within
-  // the 3×3 block around it), at a centre coordinate that is not a double: no double is safe there
-  const bool tight = cells.subSize() == 2 * ctx.problem.robots[0].radius;
-  auto blockedSide = [&](int c, int r, int dc, int dr) {
-    for (int k = -1; k <= 1; ++k)
-      if (!isFree(c + dc + k * dr, r + dr + k * dc)) return true;
-    return false;
-  };
-  auto squeezed = [&](int c, int r) {
-    if (!tight) return false;
-    const Point p = cells.subCenter(c, r);
-    return (exactFromDouble(toDouble(p.x)) != p.x && blockedSide(c, r, -1, 0) && blockedSide(c, r, 1, 0)) ||
-           (exactFromDouble(toDouble(p.y)) != p.y && blockedSide(c, r, 0, -1) && blockedSide(c, r, 0, 1));
-  };
+  auto squeezed = [&](int c, int r) { return squeezedSubcell(ctx, {c, r}); };
   const auto reachable = flood(cells, s, isFree);
   const auto safe = flood(cells, s, [&](int c, int r) { return isFree(c, r) && !squeezed(c, r); });
   const auto seen = enteredSubcells(cells, plan);

@@ -17,6 +17,9 @@ namespace coverkit::testing_helpers {
 /// both sides of an axis, within the 3×3 block) at a centre that is not a double: no double path
 /// may be safe there, and the plan must report sub-cells left out.
 ::testing::AssertionResult coversReachableSubcells(const planners::PlanningContext& ctx, const Plan& plan);
+/// The definition the coverage checker excuses by: squeezed to exactly 2r between cells that are not
+/// free (both sides of an axis, within the 3×3 block) at a centre coordinate that is not a double.
+bool squeezedSubcell(const planners::PlanningContext& ctx, CellIndex c);
 /// Sub-cells the paths' centres pass through (dense sampling, independent of the metrics).
 std::vector<char> enteredSubcells(const CellGrid& cells, const Plan& plan);
 /// A context for a workspace with one robot.

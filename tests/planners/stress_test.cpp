@@ -1,0 +1,110 @@
+// Every planner on cells against a seeded spread of worlds, radii, cell sizes and starts: valid,
+// complete as declared, deterministic. COVERKIT_STRESS_WORLDS raises the number of worlds for a
+// longer hunt (the suite runs 8).
+#include "helpers/checkers.h"
+
+#include <coverkit/datasets/generators.h>
+#include <coverkit/datasets/path_io.h>
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/registry.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <random>
+
+using namespace coverkit;
+
+namespace {
+
+std::string json(const Plan& p) {
+  datasets::PathDocument d;
+  d.paths = p.paths;
+  return datasets::pathJson(d);
+}
+
+/// A free point of the world drawn from the seed: the centre of a random free sub-cell, moved
+/// off-centre by a quarter of the slack the disc has there.
+std::optional<Point> randomStart(const CellGrid& cells, std::mt19937_64& rng) {
+  std::vector<CellIndex> free;
+  for (int r = 0; r < cells.subRows(); ++r)
+    for (int c = 0; c < cells.subCols(); ++c)
+      if (cells.sub(c, r) == CellState::kFree) free.push_back({c, r});
+  if (free.empty()) return std::nullopt;
+  const CellIndex c = free[rng() % free.size()];
+  return cells.subCenter(c.col, c.row);
+}
+
+}  // namespace
+
+TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
+  int worlds = 8;
+  if (const char* env = std::getenv("COVERKIT_STRESS_WORLDS")) worlds = std::max(1, std::atoi(env));
+  const std::vector<Rational> radii{Rational(1, 10), Rational(3, 20), Rational(1, 4), Rational(1, 3), Rational(1, 2)};
+  std::size_t plans = 0;
+  for (int w = 0; w < worlds; ++w) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(1000 + w));
+    Workspace world;
+    if (w % 2 == 0) {
+      datasets::GridMapSpec g;
+      g.width = 24 + static_cast<int>(rng() % 30);
+      g.height = 20 + static_cast<int>(rng() % 20);
+      g.density = 0.02 * static_cast<double>(rng() % 8);
+      g.clustered = rng() % 2 == 0;
+      g.resolution = (rng() % 2) ? Rational(1, 20) : Rational(1, 10);
+      g.seed = rng();
+      world = datasets::gridToWorkspace(datasets::generateGridMap(g), "stress-grid");
+    } else {
+      datasets::PolygonWorldSpec p;
+      p.width = 8 + static_cast<int>(rng() % 8);
+      p.height = 8 + static_cast<int>(rng() % 6);
+      p.count = 3 + static_cast<int>(rng() % 8);
+      p.minSize = 0.5;
+      p.maxSize = 2;
+      p.shape = static_cast<datasets::ObstacleShape>(rng() % 4);
+      p.seed = rng();
+      world = datasets::generatePolygonWorld(p);
+    }
+    const Rational r = radii[rng() % radii.size()];
+    // the default cell size (2r) or a little more, as a user may set it
+    Problem problem;
+    problem.workspace = world;
+    problem.robots.push_back({r, std::nullopt});
+    if (rng() % 3 == 0) problem.cellSize = 2 * r * Rational(11, 10);
+    planners::PlanningContext ctx;
+    try {
+      ctx = planners::makeContext(problem);
+    } catch (const InputError&) {
+      continue;  // the robot does not fit this world: a checked refusal
+    }
+    if (rng() % 2 == 0) {
+      if (auto s = randomStart(ctx.cells, rng)) {
+        problem.robots[0].start = *s;
+        ctx = planners::makeContext(problem);
+      }
+    }
+    for (const std::string& name : planners::Registry::instance().names()) {
+      SCOPED_TRACE("world " + std::to_string(w) + " r " + r.get_str() + " planner " + name);
+      const auto caps = planners::Registry::instance().create(name)->capabilities();
+      const Plan a = planners::runPlanner(name, ctx, {});
+      if (a.status == PlanStatus::kInvalidStart || a.status == PlanStatus::kNoFreeSpace) {
+        EXPECT_FALSE(a.message.empty());
+        // every start here is in a free sub-cell: only planners of free mega-cells may refuse it,
+        // or any planner when that sub-cell is squeezed (no double start is safe there)
+        CellIndex sc;
+        const bool squeezedStart = ctx.problem.robots[0].start && ctx.cells.locateSub(*ctx.problem.robots[0].start, sc) &&
+                                   testing_helpers::squeezedSubcell(ctx, sc);
+        EXPECT_FALSE(caps.coverage == "free_sub_cells" && a.status == PlanStatus::kInvalidStart && !squeezedStart) << a.message;
+        continue;
+      }
+      ++plans;
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, a));
+      if (caps.coverage == "free_sub_cells") EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
+      else EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+      EXPECT_EQ(json(a), json(planners::runPlanner(name, ctx, {})));
+    }
+  }
+  EXPECT_GT(plans, 0u);
+  std::cout << plans << " plans checked\n";
+}
