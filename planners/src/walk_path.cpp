@@ -221,6 +221,9 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
   auto leansIntoFreeOnly = [&](const Pt& a, const Pt& b) {
     const int c0 = std::min(a.cell.col, b.cell.col), c1 = std::max(a.cell.col, b.cell.col);
     const int r0 = std::min(a.cell.row, b.cell.row), r1 = std::max(a.cell.row, b.cell.row);
+    for (int r = r0; r <= r1; ++r)  // the cells the move spans (a diagonal's side cells too)
+      for (int c = c0; c <= c1; ++c)
+        if (nonFree(c, r)) return false;
     for (const Pt* p : {&a, &b}) {
       const int sx = side(p->xv), sy = side(p->yv);
       if ((sx > 0 && p->cell.col == c1) || (sx < 0 && p->cell.col == c0))
