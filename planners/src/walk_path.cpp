@@ -216,34 +216,47 @@ PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& r
     if (c.n > 1 && !leanFree(v, c.side[0]) && leanFree(v, c.side[1])) vars[static_cast<std::size_t>(v)].pick = 1;
   }
   // A move is safe without an exact test when its disc leans only into free cells (it then stays
-  // in the union of free closed cells); otherwise, and for the moves from and to the start point,
-  // ClearanceChecker decides.
-  auto leansIntoFreeOnly = [&](const Pt& a, const Pt& b) {
+  // in the union of free closed cells), and certainly unsafe when it leans into a blocked cell (no
+  // point of W's interior there: the disc would cross W's boundary). Only partial cells, and the
+  // moves from and to the start point, need ClearanceChecker.
+  enum Lean { kIntoFree, kIntoPartial, kIntoBlocked };
+  auto lean = [&](const Pt& a, const Pt& b) {
     const int c0 = std::min(a.cell.col, b.cell.col), c1 = std::max(a.cell.col, b.cell.col);
     const int r0 = std::min(a.cell.row, b.cell.row), r1 = std::max(a.cell.row, b.cell.row);
+    Lean worst = kIntoFree;
+    auto into = [&](int c, int r) {
+      const Lean l = !cells.insideSub(c, r) || cells.sub(c, r) == CellState::kBlocked ? kIntoBlocked
+                     : cells.sub(c, r) == CellState::kPartial                          ? kIntoPartial
+                                                                                       : kIntoFree;
+      worst = std::max(worst, l);
+    };
     for (int r = r0; r <= r1; ++r)  // the cells the move spans (a diagonal's side cells too)
       for (int c = c0; c <= c1; ++c)
-        if (nonFree(c, r)) return false;
+        if (nonFree(c, r)) return kIntoBlocked;  // not a move between free cells: never taken as safe
     for (const Pt* p : {&a, &b}) {
       const int sx = side(p->xv), sy = side(p->yv);
       if ((sx > 0 && p->cell.col == c1) || (sx < 0 && p->cell.col == c0))
-        for (int r = r0; r <= r1; ++r)
-          if (nonFree(p->cell.col + sx, r)) return false;
+        for (int r = r0; r <= r1; ++r) into(p->cell.col + sx, r);
       if ((sy > 0 && p->cell.row == r1) || (sy < 0 && p->cell.row == r0))
-        for (int c = c0; c <= c1; ++c)
-          if (nonFree(c, p->cell.row + sy)) return false;
+        for (int c = c0; c <= c1; ++c) into(c, p->cell.row + sy);
     }
-    return true;
+    return worst;
   };
   std::unique_ptr<ClearanceChecker> checker;  // built at the first exact test (its edge index costs)
   auto clear = [&](std::size_t k) {
     if (!need[k]) return true;
     const PointD a = coord(pts[k]), b = coord(pts[k + 1]);
     const bool fromStart = pts[k].xv < 0, toStart = pts[k + 1].xv < 0;
-    if (!fromStart && !toStart && leansIntoFreeOnly(pts[k], pts[k + 1])) return true;
-    // the start point where it coincides with its waypoint (the default start does)
-    if (a.x == b.x && a.y == b.y && (fromStart != toStart) && leansIntoFreeOnly(pts[fromStart ? k + 1 : k], pts[fromStart ? k + 1 : k]))
-      return true;
+    if (!fromStart && !toStart) {
+      const Lean l = lean(pts[k], pts[k + 1]);
+      if (l == kIntoFree) return true;
+      if (l == kIntoBlocked) return false;
+    } else if (a.x == b.x && a.y == b.y) {  // the start point where it coincides with its waypoint (the default start does)
+      const Pt& w = pts[fromStart ? k + 1 : k];
+      const Lean l = lean(w, w);
+      if (l == kIntoFree) return true;
+      if (l == kIntoBlocked) return false;
+    }
     ++out.checkedMoves;
     if (!checker) checker = std::make_unique<ClearanceChecker>(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
     return checker->clear(Point{exactFromDouble(a.x), exactFromDouble(a.y)}, Point{exactFromDouble(b.x), exactFromDouble(b.y)});
@@ -400,7 +413,9 @@ bool withoutUnplaceableCells(const PlanningContext& ctx, CellIndex keep, Plan& p
     for (CellIndex c : unsafe)
       if (reduced.cells.sub(c.col, c.row) == CellState::kFree && !(c == keep)) {
         ++leftOut;
-        reduced.cells.setSub(c.col, c.row, CellState::kBlocked);
+        // partial, not blocked: the planners leave it alone, while the geometry there stays free
+        // (a move leaning into it is still tested exactly, never refused as into an obstacle)
+        reduced.cells.setSub(c.col, c.row, CellState::kPartial);
       }
     use = &reduced;
   }
