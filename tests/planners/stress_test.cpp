@@ -5,12 +5,16 @@
 
 #include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/path_io.h>
+#include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <random>
 
@@ -107,4 +111,47 @@ TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
   }
   EXPECT_GT(plans, 0u);
   std::cout << plans << " plans checked\n";
+}
+
+// COVERKIT_STRESS_MAPS=DIR (map files, e.g. ../shared/maps/*/): every planner on cells on each map
+// with several radii, validated and checked for coverage. Skipped when unset (the suite ships no
+// third-party maps).
+TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
+  const char* dir = std::getenv("COVERKIT_STRESS_MAPS");
+  if (!dir) GTEST_SKIP() << "COVERKIT_STRESS_MAPS not set";
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string ext = e.path().extension().string();
+    if (ext == ".yaml" || ext == ".map" || ext == ".wkt" || ext == ".geojson") files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  std::size_t plans = 0;
+  for (const std::string& f : files) {
+    const Workspace w = datasets::loadMap(f);
+    const Box b = w.bbox();
+    const double extent = std::min(toDouble(Rational(b.xmax - b.xmin)), toDouble(Rational(b.ymax - b.ymin)));
+    for (const double frac : {0.003, 0.006, 0.01, 0.025}) {
+      // radii scaled to the map: 0.3 % to 2.5 % of its shorter side (at least 0.05), as 3-digit decimals
+      const double rd = std::max(0.05, frac * extent);
+      const double scale = std::pow(10.0, 2 - std::floor(std::log10(rd)));
+      const Rational r = parseRational(formatDouble(std::round(rd * scale) / scale), "r", "r");
+      planners::PlanningContext ctx;
+      try {
+        ctx = testing_helpers::contextFor(w, r);
+      } catch (const InputError&) {
+        continue;
+      }
+      for (const std::string& name : planners::Registry::instance().names()) {
+        SCOPED_TRACE(f + " r " + r.get_str() + " " + name);
+        const auto caps = planners::Registry::instance().create(name)->capabilities();
+        const Plan a = planners::runPlanner(name, ctx, {});
+        if (a.status == PlanStatus::kInvalidStart || a.status == PlanStatus::kNoFreeSpace) continue;
+        ++plans;
+        EXPECT_TRUE(testing_helpers::planIsValid(ctx, a));
+        if (caps.coverage == "free_sub_cells") EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
+        else EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+      }
+    }
+  }
+  std::cout << plans << " plans checked on " << files.size() << " maps\n";
 }
