@@ -128,6 +128,27 @@ bool squeezedSubcell(const planners::PlanningContext& ctx, CellIndex c) {
   return ::testing::AssertionSuccess();
 }
 
+/// Gabriely & Rimon's bound: length <= (n + m)·D, n covered D-cells, m covered D-cells on the
+/// boundary (4-adjacent to a cell that is not free or to the grid's edge); + 2D for the start's
+/// connector.
+::testing::AssertionResult withinGabrielyRimonBound(const planners::PlanningContext& ctx, const Plan& plan) {
+  const double length = plan.paths[0].length();
+  const auto entered = testing_helpers::enteredSubcells(ctx.cells, plan);
+  std::size_t n = 0, m = 0;
+  for (int r = 0; r < ctx.cells.subRows(); ++r)
+    for (int cc = 0; cc < ctx.cells.subCols(); ++cc) {
+      if (!entered[static_cast<std::size_t>(r) * ctx.cells.subCols() + cc]) continue;
+      ++n;
+      bool boundary = false;
+      for (auto [dc, dr] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
+        boundary = boundary || !ctx.cells.insideSub(cc + dc, r + dr) || ctx.cells.sub(cc + dc, r + dr) != CellState::kFree;
+      m += boundary;
+    }
+  const double D = ctx.cells.subSizeD(), bound = static_cast<double>(n + m) * D + 2 * D;
+  if (length <= bound) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "length " << length << " > (n + m)·D + 2D = " << bound << " (n " << n << ", m " << m << ")";
+}
+
 planners::PlanningContext contextFor(const Workspace& w, const Rational& radius, std::optional<Point> start) {
   Problem p;
   p.workspace = w;

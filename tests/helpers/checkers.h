@@ -22,6 +22,9 @@ namespace coverkit::testing_helpers {
 bool squeezedSubcell(const planners::PlanningContext& ctx, CellIndex c);
 /// Sub-cells the paths' centres pass through (dense sampling, independent of the metrics).
 std::vector<char> enteredSubcells(const CellGrid& cells, const Plan& plan);
+/// Gabriely & Rimon's bound for Spiral-STC: length ≤ (n + m)·D (+ 2D for the start's connector),
+/// n sub-cells entered, m of them next to a cell that is not free or to the grid's edge.
+::testing::AssertionResult withinGabrielyRimonBound(const planners::PlanningContext& ctx, const Plan& plan);
 /// A context for a workspace with one robot.
 planners::PlanningContext contextFor(const Workspace& w, const Rational& radius, std::optional<Point> start = std::nullopt);
 

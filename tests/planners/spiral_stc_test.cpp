@@ -12,6 +12,7 @@
 
 using namespace coverkit;
 
+
 TEST(Sensor, AnswersOnlyForTheRobotsCellAndLogsEveryQuestion) {
   graph::GridGraph g(3, 1);
   g.active = {1, 1, 0};
@@ -49,30 +50,7 @@ TEST(SpiralStc, SamePathAsOfflineStcWithDfsCcwFromEveryQuadrant) {
       b.paths = online.paths;
       EXPECT_EQ(datasets::pathJson(a), datasets::pathJson(b)) << "seed " << seed << " quadrant " << q;
       EXPECT_EQ(online.statistics.at("tree_nodes"), offline.statistics.at("tree_nodes"));
-      // Gabriely & Rimon's bound: length <= (n + m)·D, n covered D-cells, m covered D-cells on the
-      // boundary (4-adjacent to a cell that is not free or to the grid's edge)
-      const Metrics mt = computeMetrics(ctx.problem, ctx.cells, online.paths);
-      std::size_t m = 0;
-      std::vector<char> entered(ctx.cells.subCount(), 0);
-      {
-        const auto pts = online.paths[0].polyline(0.01);
-        for (std::size_t i = 0; i + 1 < pts.size(); ++i)
-          for (int k = 0; k <= 20; ++k) {
-            CellIndex e;
-            if (ctx.cells.locateSubD({pts[i].x + (pts[i + 1].x - pts[i].x) * k / 20, pts[i].y + (pts[i + 1].y - pts[i].y) * k / 20}, e))
-              entered[static_cast<std::size_t>(e.row) * ctx.cells.subCols() + e.col] = 1;
-          }
-      }
-      for (int r = 0; r < ctx.cells.subRows(); ++r)
-        for (int cc = 0; cc < ctx.cells.subCols(); ++cc) {
-          if (!entered[static_cast<std::size_t>(r) * ctx.cells.subCols() + cc]) continue;
-          bool boundary = false;
-          for (auto [dc, dr] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
-            boundary = boundary || !ctx.cells.insideSub(cc + dc, r + dr) || ctx.cells.sub(cc + dc, r + dr) != CellState::kFree;
-          m += boundary;
-        }
-      const double D = ctx.cells.subSizeD();
-      EXPECT_LE(mt.length, static_cast<double>(mt.enteredSubcells + m) * D + 2 * D) << "seed " << seed;  // + the start's connector
+      EXPECT_TRUE(testing_helpers::withinGabrielyRimonBound(ctx, online)) << "seed " << seed;
       // local questions only, at most four per mega-cell of the tree
       EXPECT_LE(online.statistics.at("sensor_queries"), 4 * online.statistics.at("tree_nodes"));
     }
@@ -99,6 +77,22 @@ TEST(SpiralStc, OnlineTreeRulesAskOnlyLocalQuestionsAndCoverTheSameMegaCells) {
       EXPECT_LE(online.statistics.at("sensor_queries"), 4 * online.statistics.at("tree_nodes")) << tree;
       // a tree of n mega-cells is walked around in 4n moves, whatever its shape
       EXPECT_EQ(online.statistics.at("subcells_in_tour"), 4 * online.statistics.at("tree_nodes")) << tree;
+    }
+  }
+}
+
+TEST(SpiralStc, LengthWithinTheBoundOnPolygonWorlds) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    datasets::PolygonWorldSpec p;
+    p.seed = seed;
+    p.count = 12;
+    p.shape = static_cast<datasets::ObstacleShape>(seed % 4);
+    const auto ctx = testing_helpers::contextFor(datasets::generatePolygonWorld(p), Rational(1, 5));
+    for (const char* tree : {"dfs_ccw", "bfs", "kruskal_straight"}) {
+      const Plan plan = planners::runPlanner("spiral_stc", ctx, {{"tree", tree}});
+      if (plan.status == PlanStatus::kInvalidStart) continue;
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan)) << seed;
+      EXPECT_TRUE(testing_helpers::withinGabrielyRimonBound(ctx, plan)) << seed << " " << tree;
     }
   }
 }

@@ -104,8 +104,11 @@ TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
       }
       ++plans;
       ASSERT_TRUE(testing_helpers::planIsValid(ctx, a));
-      if (caps.coverage == "free_sub_cells") EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
-      else EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+      if (caps.coverage == "free_sub_cells") {
+        EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
+      } else {
+        EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+      }
       EXPECT_EQ(json(a), json(planners::runPlanner(name, ctx, {})));
     }
   }
@@ -148,8 +151,14 @@ TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
         if (a.status == PlanStatus::kInvalidStart || a.status == PlanStatus::kNoFreeSpace) continue;
         ++plans;
         EXPECT_TRUE(testing_helpers::planIsValid(ctx, a));
-        if (caps.coverage == "free_sub_cells") EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
-        else EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+        if (caps.coverage == "free_sub_cells") {
+          EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
+        } else {
+          EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+        }
+        if (name == "spiral_stc") {
+          EXPECT_TRUE(testing_helpers::withinGabrielyRimonBound(ctx, a));
+        }
       }
     }
   }
