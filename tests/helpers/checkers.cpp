@@ -1,5 +1,7 @@
 #include "helpers/checkers.h"
 
+#include <coverkit/datasets/path_io.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -147,6 +149,12 @@ bool squeezedSubcell(const planners::PlanningContext& ctx, CellIndex c) {
   const double D = ctx.cells.subSizeD(), bound = static_cast<double>(n + m) * D + 2 * D;
   if (length <= bound) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "length " << length << " > (n + m)·D + 2D = " << bound << " (n " << n << ", m " << m << ")";
+}
+
+std::string pathJsonOf(const Plan& plan) {
+  datasets::PathDocument d;
+  d.paths = plan.paths;
+  return datasets::pathJson(d);
 }
 
 planners::PlanningContext contextFor(const Workspace& w, const Rational& radius, std::optional<Point> start) {

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace coverkit::testing_helpers {
 
 /// The plan succeeded and the independent validator accepts every path.
@@ -25,6 +27,8 @@ std::vector<char> enteredSubcells(const CellGrid& cells, const Plan& plan);
 /// Gabriely & Rimon's bound for Spiral-STC: length ≤ (n + m)·D (+ 2D for the start's connector),
 /// n sub-cells entered, m of them next to a cell that is not free or to the grid's edge.
 ::testing::AssertionResult withinGabrielyRimonBound(const planners::PlanningContext& ctx, const Plan& plan);
+/// The paths of a plan as the path file's JSON (byte-for-byte comparisons).
+std::string pathJsonOf(const Plan& plan);
 /// A context for a workspace with one robot.
 planners::PlanningContext contextFor(const Workspace& w, const Rational& radius, std::optional<Point> start = std::nullopt);
 

@@ -13,12 +13,6 @@ using namespace coverkit;
 
 namespace {
 
-std::string json(const Plan& p) {
-  datasets::PathDocument d;
-  d.paths = p.paths;
-  return datasets::pathJson(d);
-}
-
 Workspace gridWorld(std::uint64_t seed, int w, int h, double density, const Rational& resolution) {
   datasets::GridMapSpec g;
   g.width = w;
@@ -44,14 +38,14 @@ TEST(FullStc, ObstacleFreeMapAllThreeGiveTheSameOptimalPath) {
     const Plan spiral = planners::runPlanner("spiral_stc", ctx, {});
     const Plan full = planners::runPlanner("full_stc", ctx, {});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, full));
-    EXPECT_EQ(json(stc), json(full)) << m << "x" << n;
-    EXPECT_EQ(json(spiral), json(full)) << m << "x" << n;
+    EXPECT_EQ(testing_helpers::pathJsonOf(stc), testing_helpers::pathJsonOf(full)) << m << "x" << n;
+    EXPECT_EQ(testing_helpers::pathJsonOf(spiral), testing_helpers::pathJsonOf(full)) << m << "x" << n;
     const Metrics mt = computeMetrics(ctx.problem, ctx.cells, full.paths);
     EXPECT_NEAR(mt.length, 4.0 * m * n * D.get_d(), 1e-9);
     EXPECT_EQ(mt.enteredSubcells, static_cast<std::size_t>(4 * m * n));
     EXPECT_LE(mt.revisitedSubcells, 1u);  // the start, on the return
     for (const char* tree : {"bfs", "kruskal_straight"})
-      EXPECT_EQ(json(planners::runPlanner("stc", ctx, {{"tree", tree}})), json(planners::runPlanner("full_stc", ctx, {{"tree", tree}})))
+      EXPECT_EQ(testing_helpers::pathJsonOf(planners::runPlanner("stc", ctx, {{"tree", tree}})), testing_helpers::pathJsonOf(planners::runPlanner("full_stc", ctx, {{"tree", tree}})))
           << tree;
   }
 }

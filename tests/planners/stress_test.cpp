@@ -22,12 +22,6 @@ using namespace coverkit;
 
 namespace {
 
-std::string json(const Plan& p) {
-  datasets::PathDocument d;
-  d.paths = p.paths;
-  return datasets::pathJson(d);
-}
-
 /// A free point of the world drawn from the seed: the centre of a random free sub-cell, moved
 /// off-centre by a quarter of the slack the disc has there.
 std::optional<Point> randomStart(const CellGrid& cells, std::mt19937_64& rng) {
@@ -109,14 +103,14 @@ TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
       } else {
         EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
       }
-      EXPECT_EQ(json(a), json(planners::runPlanner(name, ctx, {})));
+      EXPECT_EQ(testing_helpers::pathJsonOf(a), testing_helpers::pathJsonOf(planners::runPlanner(name, ctx, {})));
     }
   }
   EXPECT_GT(plans, 0u);
   std::cout << plans << " plans checked\n";
 }
 
-// COVERKIT_STRESS_MAPS=DIR (map files, e.g. ../shared/maps/*/): every planner on cells on each map
+// COVERKIT_STRESS_MAPS=DIR (a folder of map files, searched recursively): every planner on cells on each map
 // with several radii, validated and checked for coverage. Skipped when unset (the suite ships no
 // third-party maps).
 TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
