@@ -1,6 +1,7 @@
 // The papers' experiments. See paper_experiments.h.
 #include "paper_experiments.h"
 
+#include "render.h"
 #include "runner.h"
 
 #include <coverkit/datasets/generators.h>
@@ -183,6 +184,62 @@ std::string runBsaExperiment(const BsaExperimentOptions& o, const std::string& o
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "backtracking.svg").string(), svg);
+  return md.str();
+}
+
+std::string runTraccScenarios(const std::string& outDir) {
+  struct Scenario {
+    std::string name, blocked, paper;
+    std::vector<int> cells;
+  };
+  const std::vector<Scenario> scenarios{
+      {"0", "none", "71 cells visited (six rows), redundancy 45.45 % (cells sensed twice)", {}},
+      {"1", "C5; C30, C40, C42, C52 around C41", "detour C4-C15-C16-C17-C6; C41 blocked in", {5, 30, 40, 42, 52}},
+      {"2", "ring C49-C51, C59, C61, C71-C73 around C60; C110, C120 beside C121 (assumed)",
+       "C60, C62, C121 unchecked after the flow; C121 discarded", {49, 50, 51, 59, 61, 71, 72, 73, 110, 120}}};
+  std::ostringstream csv, md;
+  csv << "scenario,valid,cells_entered,length,turns,detours,redundancy_rate,unsafe_cells,unchecked_cells,unreached_free_cells,end_cell\n";
+  md << "# TRACC: the paper's 11×11 scenarios\n\nStart S = C1 (bottom-left), one cell per robot, flow along rows.\n\n"
+     << "| scenario | blocked cells | valid | cells entered | length | turns | detours | redundancy | unsafe | never sensed | end | paper |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const Scenario& sc : scenarios) {
+    std::string text;
+    for (int row = 10; row >= 0; --row) {
+      for (int col = 0; col < 11; ++col)
+        text += std::find(sc.cells.begin(), sc.cells.end(), row * 11 + col + 1) != sc.cells.end() ? '#' : '.';
+      text += '\n';
+    }
+    Problem problem;
+    problem.workspace = datasets::parseTextGrid(text, "scenario-" + sc.name + ".grid");
+    problem.robots.push_back({Rational(1, 2), Point{Rational(1, 2), Rational(1, 2)}});
+    const planners::PlanningContext ctx = planners::makeContext(problem);
+    MetricOptions mo = defaultMetricOptions();
+    mo.coverable = false;
+    const RunResult r = runOnce(ctx, "tracc", {}, 0, {}, mo);
+    const auto& st = r.plan.statistics;
+    const int endCell = static_cast<int>(st.at("end_row")) * 11 + static_cast<int>(st.at("end_col")) + 1;
+    csv << sc.name << ',' << (r.validation.valid ? 1 : 0) << ',' << st.at("covered_cells") << ',' << fmt(r.metrics.length, 1) << ','
+        << r.metrics.turns << ',' << st.at("detours") << ',' << fmt(st.at("redundancy_rate"), 2) << ',' << st.at("unsafe_cells") << ','
+        << st.at("unchecked_cells") << ',' << st.at("unreached_free_cells") << ",C" << endCell << '\n';
+    md << "| " << sc.name << " | " << sc.blocked << " | " << (r.validation.valid ? "yes" : "no") << " | " << st.at("covered_cells") << " | "
+       << fmt(r.metrics.length, 0) << " | " << r.metrics.turns << " | " << st.at("detours") << " | " << fmt(st.at("redundancy_rate"), 1) << " % | "
+       << st.at("unsafe_cells") << " | " << st.at("unchecked_cells") << " | C" << endCell << " | " << sc.paper << " |\n";
+    datasets::PathDocument doc;
+    doc.paths = r.plan.paths;
+    doc.planner = "tracc";
+    files.emplace_back("scenario-" + sc.name + ".grid", text);
+    files.emplace_back("scenario-" + sc.name + ".json", datasets::pathJson(doc));
+    std::filesystem::create_directories(outDir);
+    PictureContent pc{&ctx.problem.workspace, &ctx.cells, nullptr, &r.plan.paths, 0.5, "TRACC scenario " + sc.name};
+    renderPicture((std::filesystem::path(outDir) / ("scenario-" + sc.name + ".svg")).string(), pc);
+  }
+  md << "\nOur agent sweeps every free cell (a disc robot must), where the paper's flow visits every other row and senses the rows "
+        "between; its redundancy counts cells sensed twice, ours cells entered twice (docs/grid-rails.md).\n";
+  std::filesystem::create_directories(outDir);
+  for (const auto& [name, content] : files) datasets::writeFileAtomically((std::filesystem::path(outDir) / name).string(), content);
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
   return md.str();
 }
 

@@ -16,4 +16,10 @@ struct BsaExperimentOptions {
 };
 std::string runBsaExperiment(const BsaExperimentOptions& options, const std::string& outDir);
 
+/// TRACC paper, section 3: its 11×11 grid (C1 … C121 row by row from S = C1) without obstacles and
+/// in the two scenarios the text describes (scenario 2's obstacles are our assumption: the text
+/// names only C60, C62 and C121). Writes OUT/scenario-K.grid, OUT/scenario-K.json (the path),
+/// OUT/scenario-K.svg, OUT/results.csv and OUT/summary.md. Returns the summary.
+std::string runTraccScenarios(const std::string& outDir);
+
 }  // namespace coverkit::experiments

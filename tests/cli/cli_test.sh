@@ -113,6 +113,7 @@ JSON
 "$CK" experiment bsa-backtracking --seeds 3 --out "$T/bsa" > "$T/bsa.out" && [ "$(grep -c ',1,' "$T/bsa/results.csv")" -eq 6 ] && grep -q '| backtracks' "$T/bsa/summary.md" && grep -q '<svg' "$T/bsa/backtracking.svg" && ok || bad "bsa experiment: $(head -c 300 "$T/bsa.out")"
 "$CK" experiment bsa-backtracking --seeds 3 --out "$T/bsa2" > /dev/null && cmp -s "$T/bsa/results.csv" "$T/bsa2/results.csv" && ok || bad "bsa experiment not deterministic"
 expect_bad "unknown experiment" "experiment: nope: unknown experiment" experiment nope --out "$T/out.json"
+"$CK" experiment tracc-scenarios --out "$T/tracc" > /dev/null && [ "$(grep -c '^[012],1,' "$T/tracc/results.csv")" -eq 3 ] && grep -q '^1,1,115,' "$T/tracc/results.csv" && [ -s "$T/tracc/scenario-1.svg" ] && ok || bad "tracc scenarios: $(cat "$T/tracc/results.csv" 2>/dev/null)"
 expect_bad "experiment seeds 0" "--seeds: 0: must be at least 1" experiment bsa-backtracking --seeds 0 --out "$T/out.json"
 expect_bad "experiment obstacles" "--obstacles: blobs: must be clustered or scattered" experiment bsa-backtracking --obstacles blobs --out "$T/out.json"
 # the grid-rail planners on a map, end to end
