@@ -23,6 +23,9 @@ bool parseObstacleShape(const std::string& s, ObstacleShape& out) {
   else if (s == "convex") out = ObstacleShape::kConvex;
   else if (s == "nonconvex" || s == "non_convex") out = ObstacleShape::kNonConvex;
   else if (s == "stars" || s == "star") out = ObstacleShape::kStar;
+  else if (s == "rotated" || s == "rotated_rectangles") out = ObstacleShape::kRotatedRectangle;
+  else if (s == "discs" || s == "disc") out = ObstacleShape::kDisc;
+  else if (s == "mixed") out = ObstacleShape::kMixed;
   else return false;
   return true;
 }
@@ -49,21 +52,30 @@ Workspace generatePolygonWorld(const PolygonWorldSpec& spec) {
       for (const Disc& d : placed) clash = clash || std::hypot(d.x - cx, d.y - cy) < d.r + R + margin;
       if (clash) continue;
       Ring ring;
-      if (spec.shape == ObstacleShape::kRectangle) {
+      const ObstacleShape shape = spec.shape == ObstacleShape::kMixed ? static_cast<ObstacleShape>(rng() % 6) : spec.shape;
+      if (shape == ObstacleShape::kRotatedRectangle) {
+        const double a = uniform(rng, 0.4, 1.0) * R, b = std::sqrt(std::max(R * R - a * a, 0.04 * R * R));
+        const double t = uniform(rng, 0, M_PI), c = std::cos(t), sn = std::sin(t);
+        for (auto [u, v] : {std::pair{-a, -b}, std::pair{a, -b}, std::pair{a, b}, std::pair{-a, b}})
+          ring.push_back({lattice(cx + u * c - v * sn), lattice(cy + u * sn + v * c)});
+        if (signedArea2(ring) == 0) continue;
+      } else if (shape == ObstacleShape::kRectangle) {
         const double a = uniform(rng, 0.4, 1.0) * R, b = std::sqrt(std::max(R * R - a * a, 0.04 * R * R));
         ring = {{lattice(cx - a), lattice(cy - b)}, {lattice(cx + a), lattice(cy - b)}, {lattice(cx + a), lattice(cy + b)}, {lattice(cx - a), lattice(cy + b)}};
       } else {
-        const int n = spec.shape == ObstacleShape::kStar ? 2 * (4 + static_cast<int>(rng() % 3)) : 5 + static_cast<int>(rng() % 6);
+        const int n = shape == ObstacleShape::kStar ? 2 * (4 + static_cast<int>(rng() % 3)) : shape == ObstacleShape::kDisc ? 24 : 5 + static_cast<int>(rng() % 6);
+        const double phase = shape == ObstacleShape::kDisc ? uniform(rng, 0, 2 * M_PI / n) : 0;
         std::vector<double> ang;
-        for (int i = 0; i < n; ++i) ang.push_back(spec.shape == ObstacleShape::kStar ? 2 * M_PI * i / n : uniform(rng, 0, 2 * M_PI));
+        for (int i = 0; i < n; ++i)
+          ang.push_back(shape == ObstacleShape::kStar ? 2 * M_PI * i / n : shape == ObstacleShape::kDisc ? phase + 2 * M_PI * i / n : uniform(rng, 0, 2 * M_PI));
         std::sort(ang.begin(), ang.end());
         bool crowded = false;  // keep vertices apart so rounding to the lattice cannot fold the ring
         for (int i = 0; i < n; ++i) crowded = crowded || (i + 1 < n ? ang[static_cast<std::size_t>(i) + 1] - ang[static_cast<std::size_t>(i)] : ang[0] + 2 * M_PI - ang.back()) < 0.2;
         if (crowded) continue;
         for (int i = 0; i < n; ++i) {
           double rr = R;
-          if (spec.shape == ObstacleShape::kNonConvex) rr = R * uniform(rng, 0.35, 1.0);
-          if (spec.shape == ObstacleShape::kStar) rr = (i % 2 == 0) ? R : R * 0.4;
+          if (shape == ObstacleShape::kNonConvex) rr = R * uniform(rng, 0.35, 1.0);
+          if (shape == ObstacleShape::kStar) rr = (i % 2 == 0) ? R : R * 0.4;
           Point p{lattice(cx + rr * std::cos(ang[static_cast<std::size_t>(i)])), lattice(cy + rr * std::sin(ang[static_cast<std::size_t>(i)]))};
           if (ring.empty() || !(ring.back() == p)) ring.push_back(p);
         }

@@ -60,7 +60,7 @@ TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
       p.count = 3 + static_cast<int>(rng() % 8);
       p.minSize = 0.5;
       p.maxSize = 2;
-      p.shape = static_cast<datasets::ObstacleShape>(rng() % 4);
+      p.shape = static_cast<datasets::ObstacleShape>(rng() % 7);
       p.seed = rng();
       world = datasets::generatePolygonWorld(p);
     }

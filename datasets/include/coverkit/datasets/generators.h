@@ -8,7 +8,10 @@
 
 namespace coverkit::datasets {
 
-enum class ObstacleShape { kRectangle, kConvex, kNonConvex, kStar };
+/// Axis-aligned rectangles, convex and non-convex polygons, stars; rotated rectangles and discs (as
+/// 24-gons) for worlds whose obstacles are not aligned with the grid; mixed: one of the six drawn
+/// per obstacle.
+enum class ObstacleShape { kRectangle, kConvex, kNonConvex, kStar, kRotatedRectangle, kDisc, kMixed };
 bool parseObstacleShape(const std::string& s, ObstacleShape& out);
 
 struct PolygonWorldSpec {
