@@ -291,8 +291,11 @@ int main(int argc, char** argv) {
 
   std::string experimentName, experimentOut = "coverkit-experiment";
   experiments::BsaExperimentOptions bsaOptions;
-  auto* experiment = app.add_subcommand("experiment", "reproduce a paper's experiment (bsa-backtracking, tracc-scenarios): CSV, table, chart");
-  experiment->add_option("name", experimentName, "the experiment: bsa-backtracking or tracc-scenarios")->required();
+  auto* experiment =
+      app.add_subcommand("experiment", "reproduce a paper's experiment (bsa-backtracking, tracc-scenarios, coverage-vs-size): CSV, table, chart");
+  experiment->add_option("name", experimentName, "the experiment: bsa-backtracking, tracc-scenarios or coverage-vs-size")->required();
+  std::string experimentConfig;
+  experiment->add_option("--config", experimentConfig, "coverage-vs-size: the YAML config (default: experiments/configs/coverage_vs_size.yaml)");
   experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
   experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (default 100)");
   experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
@@ -420,13 +423,19 @@ int main(int argc, char** argv) {
       return v.valid ? 0 : 1;
     }
     if (*experiment) {
+      if (experimentName == "coverage-vs-size") {
+        const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig("coverage_vs_size.yaml") : experimentConfig;
+        std::cout << experiments::runCoverageVsSize(cfg, experimentOut) << "written: " << experimentOut
+                  << "/results.csv, summary.md, coverage_vs_size.svg\n";
+        return 0;
+      }
       if (experimentName == "tracc-scenarios") {
         std::cout << experiments::runTraccScenarios(experimentOut) << "written: " << experimentOut
                   << "/results.csv, summary.md, scenario-K.grid, .json, .svg\n";
         return 0;
       }
       if (experimentName != "bsa-backtracking")
-        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, tracc-scenarios)");
+        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-size, tracc-scenarios)");
       if (obstacleKind != "clustered" && obstacleKind != "scattered")
         throw InputError("--obstacles", obstacleKind, "must be clustered or scattered");
       bsaOptions.clustered = obstacleKind == "clustered";

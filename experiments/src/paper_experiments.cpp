@@ -7,7 +7,11 @@
 #include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/planners/registry.h>
+
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -240,6 +244,173 @@ std::string runTraccScenarios(const std::string& outDir) {
   for (const auto& [name, content] : files) datasets::writeFileAtomically((std::filesystem::path(outDir) / name).string(), content);
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
+  return md.str();
+}
+
+namespace {
+
+/// Line chart panels (x against y per series), plain SVG.
+std::string lineChartSvg(const std::vector<std::string>& titles, const std::string& xLabel,
+                         const std::vector<std::map<std::string, std::vector<std::pair<double, double>>>>& panels) {
+  const int pw = 440, ph = 320, ml = 55, mb = 45, mt = 30;
+  const char* colours[6] = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02"};
+  std::ostringstream svg;
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << pw * panels.size() << "' height='" << ph
+      << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    double x0v = 1e300, x1v = -1e300, y0v = 1e300, y1v = -1e300;
+    for (const auto& [name, pts] : panels[p])
+      for (auto [x, y] : pts) x0v = std::min(x0v, x), x1v = std::max(x1v, x), y0v = std::min(y0v, y), y1v = std::max(y1v, y);
+    if (x1v <= x0v) x1v = x0v + 1;
+    if (y1v <= y0v) y1v = y0v + 1e-3;
+    const double pad = 0.05 * (y1v - y0v);
+    y0v -= pad;
+    y1v += pad;
+    const int X = static_cast<int>(p) * pw + ml, Y = ph - mb, W = pw - ml - 20, H = ph - mb - mt;
+    auto sx = [&](double x) { return X + (x - x0v) / (x1v - x0v) * W; };
+    auto sy = [&](double y) { return Y - (y - y0v) / (y1v - y0v) * H; };
+    svg << "<text x='" << X + W / 2 << "' y='18' text-anchor='middle'>" << titles[p] << "</text>\n";
+    svg << "<rect x='" << X << "' y='" << Y - H << "' width='" << W << "' height='" << H << "' fill='none' stroke='black'/>\n";
+    for (int k = 0; k <= 4; ++k) {
+      const double yv = y0v + (y1v - y0v) * k / 4, xv = x0v + (x1v - x0v) * k / 4;
+      svg << "<text x='" << X - 5 << "' y='" << sy(yv) + 4 << "' text-anchor='end'>" << fmt(yv, 3) << "</text>\n";
+      svg << "<text x='" << sx(xv) << "' y='" << Y + 15 << "' text-anchor='middle'>" << fmt(xv, 2) << "</text>\n";
+    }
+    svg << "<text x='" << X + W / 2 << "' y='" << ph - 8 << "' text-anchor='middle'>" << xLabel << "</text>\n";
+    std::size_t series = 0;
+    for (const auto& [name, pts] : panels[p]) {
+      const char* colour = colours[series % 6];
+      svg << "<polyline fill='none' stroke='" << colour << "' stroke-width='2' points='";
+      for (auto [x, y] : pts) svg << sx(x) << ',' << sy(y) << ' ';
+      svg << "'/>\n";
+      for (auto [x, y] : pts) svg << "<circle cx='" << sx(x) << "' cy='" << sy(y) << "' r='3' fill='" << colour << "'/>\n";
+      svg << "<text x='" << X + 8 << "' y='" << Y - H + 16 + 15 * series << "' fill='" << colour << "'>" << name << "</text>\n";
+      ++series;
+    }
+  }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+template <class T>
+T configValue(const YAML::Node& node, const std::string& file, const std::string& key, T fallback) {
+  if (!node[key]) return fallback;
+  try {
+    return node[key].as<T>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file, key, "not a valid value");
+  }
+}
+
+}  // namespace
+
+std::string defaultConfig(const std::string& name) { return (std::filesystem::path(COVERKIT_CONFIG_DIR) / name).string(); }
+
+std::string runCoverageVsSize(const std::string& configFile, const std::string& outDir) {
+  YAML::Node cfg;
+  try {
+    cfg = YAML::LoadFile(configFile);
+  } catch (const YAML::BadFile&) {
+    throw InputError(configFile, "file", "cannot be read");
+  } catch (const YAML::Exception& e) {
+    throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
+  }
+  const auto plannerNames = configValue<std::vector<std::string>>(cfg, configFile, "planners", {"stc", "full_stc"});
+  for (const auto& p : plannerNames)
+    if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
+  const auto radii = configValue<std::vector<std::string>>(cfg, configFile, "radii", {"0.15", "0.2", "0.25", "0.3", "0.4", "0.5"});
+  std::vector<Rational> rs;
+  for (const auto& r : radii) {
+    rs.push_back(parseRational(r, configFile + ": radii", r));
+    if (rs.back() <= 0) throw InputError(configFile, "radii", r + ": must be > 0");
+  }
+  auto label = [&](std::size_t i) { return radii[i]; };  // as written in the config
+  const YAML::Node wn = cfg["worlds"];
+  datasets::PolygonWorldSpec spec;
+  const int count = configValue<int>(wn, configFile, "count", 10);
+  spec.width = configValue<int>(wn, configFile, "width", 20);
+  spec.height = configValue<int>(wn, configFile, "height", 20);
+  spec.count = configValue<int>(wn, configFile, "obstacles", 10);
+  spec.minSize = configValue<double>(wn, configFile, "min_size", 1);
+  spec.maxSize = configValue<double>(wn, configFile, "max_size", 3);
+  const std::string shape = configValue<std::string>(wn, configFile, "shape", "mixed");
+  if (!datasets::parseObstacleShape(shape, spec.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + shape + "'");
+  if (count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
+
+  std::ostringstream csv;
+  csv << "world,planner,radius,status,valid,coverable_coverage,area_coverage,subcell_coverage,swept_area_overlap,revisited_subcells,length,turns\n";
+  struct Acc {
+    double coverage = 0, overlap = 0, minCoverage = 1;
+    std::size_t n = 0, invalid = 0, failed = 0;
+  };
+  std::map<std::string, std::map<std::string, Acc>> acc;  // planner → radius → sums
+  for (int seed = 1; seed <= count; ++seed) {
+    spec.seed = static_cast<std::uint64_t>(seed);
+    const Workspace world = datasets::generatePolygonWorld(spec);
+    for (std::size_t ri = 0; ri < rs.size(); ++ri) {
+      const Rational& r = rs[ri];
+      Problem problem;
+      problem.workspace = world;
+      problem.robots.push_back({r, std::nullopt});
+      planners::PlanningContext ctx;
+      try {
+        ctx = planners::makeContext(problem);
+      } catch (const InputError&) {
+        continue;  // the robot does not fit this world
+      }
+      const CSpace cspace(world, r);
+      MetricOptions mo = defaultMetricOptions();
+      mo.cspace = &cspace;
+      for (const std::string& p : plannerNames) {
+        const RunResult res = runOnce(ctx, p, {}, 0, {}, mo);
+        Acc& a = acc[p][label(ri)];
+        const bool ok = succeeded(res.plan.status);
+        csv << seed << ',' << p << ',' << label(ri) << ',' << toString(res.plan.status) << ',' << (res.validation.valid ? 1 : 0) << ','
+            << fmt(res.metrics.coverableCoverage, 5) << ',' << fmt(res.metrics.areaCoverage, 5) << ',' << fmt(res.metrics.subcellCoverage, 5) << ','
+            << fmt(res.metrics.sweptAreaOverlap, 5) << ',' << res.metrics.revisitedSubcells << ',' << fmt(res.metrics.length, 3) << ','
+            << res.metrics.turns << '\n';
+        if (!ok) {  // e.g. STC when the start has no free mega-cell: counted, coverage 0
+          ++a.failed;
+          ++a.n;
+          a.minCoverage = 0;
+          continue;
+        }
+        if (!res.validation.valid) {
+          ++a.invalid;
+          continue;
+        }
+        ++a.n;
+        a.coverage += res.metrics.coverableCoverage;
+        a.overlap += res.metrics.sweptAreaOverlap;
+        a.minCoverage = std::min(a.minCoverage, res.metrics.coverableCoverage);
+      }
+    }
+  }
+  std::ostringstream md;
+  md << "# Coverage and overlap against robot size\n\n" << count << " seeded " << spec.width << "×" << spec.height << " polygon worlds, " << spec.count
+     << " " << shape << " obstacles of " << spec.minSize << "-" << spec.maxSize << " m; sub-cells 2r; default start. Coverage: covered area / "
+     << "coverable area (the start's C-free component ⊕ disc). Overlap: swept area counted with multiplicity / covered area − 1. "
+     << "Plans that did not succeed count as coverage 0; invalid plans are counted and left out.\n\n"
+     << "| planner | r | plans | mean coverage | min coverage | mean overlap | not planned | invalid |\n|---|---|---|---|---|---|---|---|\n";
+  std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries;
+  for (const std::string& p : plannerNames)
+    for (std::size_t ri = 0; ri < rs.size(); ++ri) {
+      const Rational& r = rs[ri];
+      const std::string key = label(ri);
+      const Acc& a = acc[p][key];
+      const std::size_t valid = a.n - a.failed;
+      const double mean = a.n ? a.coverage / static_cast<double>(a.n) : 0, overlap = valid ? a.overlap / static_cast<double>(valid) : 0;
+      md << "| " << p << " | " << key << " | " << a.n << " | " << fmt(mean, 4) << " | " << fmt(a.n ? a.minCoverage : 0, 4) << " | " << fmt(overlap, 3)
+         << " | " << a.failed << " | " << a.invalid << " |\n";
+      coverageSeries[p].emplace_back(r.get_d(), mean);
+      overlapSeries[p].emplace_back(r.get_d(), overlap);
+    }
+  const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap (swept twice or more)"}, "robot radius r",
+                                       {coverageSeries, overlapSeries});
+  std::filesystem::create_directories(outDir);
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "coverage_vs_size.svg").string(), svg);
   return md.str();
 }
 
