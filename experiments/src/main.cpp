@@ -291,11 +291,12 @@ int main(int argc, char** argv) {
 
   std::string experimentName, experimentOut = "coverkit-experiment";
   experiments::BsaExperimentOptions bsaOptions;
-  auto* experiment =
-      app.add_subcommand("experiment", "reproduce a paper's experiment (bsa-backtracking, tracc-scenarios, coverage-vs-size): CSV, table, chart");
-  experiment->add_option("name", experimentName, "the experiment: bsa-backtracking, tracc-scenarios or coverage-vs-size")->required();
+  auto* experiment = app.add_subcommand("experiment", "reproduce a paper's experiment: CSV, table, chart (docs/experiments.md)");
+  experiment->add_option("name", experimentName,
+                         "bsa-backtracking, tracc-scenarios, coverage-vs-size, coverage-vs-complexity, coverage-vs-shape, or sweep (with --config)")
+      ->required();
   std::string experimentConfig;
-  experiment->add_option("--config", experimentConfig, "coverage-vs-size: the YAML config (default: experiments/configs/coverage_vs_size.yaml)");
+  experiment->add_option("--config", experimentConfig, "the YAML config of a sweep (default for the coverage-vs-* names: experiments/configs/)");
   experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
   experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (default 100)");
   experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
@@ -423,10 +424,13 @@ int main(int argc, char** argv) {
       return v.valid ? 0 : 1;
     }
     if (*experiment) {
-      if (experimentName == "coverage-vs-size") {
-        const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig("coverage_vs_size.yaml") : experimentConfig;
-        std::cout << experiments::runCoverageVsSize(cfg, experimentOut) << "written: " << experimentOut
-                  << "/results.csv, summary.md, coverage_vs_size.svg\n";
+      const std::map<std::string, std::string> sweeps{{"coverage-vs-size", "coverage_vs_size.yaml"},
+                                                      {"coverage-vs-complexity", "coverage_vs_complexity.yaml"},
+                                                      {"coverage-vs-shape", "coverage_vs_shape.yaml"}};
+      if (sweeps.count(experimentName) || experimentName == "sweep") {
+        if (experimentName == "sweep" && experimentConfig.empty()) throw InputError("--config", "", "the sweep needs a config file");
+        const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig(sweeps.at(experimentName)) : experimentConfig;
+        std::cout << experiments::runSweep(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
         return 0;
       }
       if (experimentName == "tracc-scenarios") {
@@ -435,7 +439,7 @@ int main(int argc, char** argv) {
         return 0;
       }
       if (experimentName != "bsa-backtracking")
-        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-size, tracc-scenarios)");
+        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-complexity, coverage-vs-shape, coverage-vs-size, sweep, tracc-scenarios)");
       if (obstacleKind != "clustered" && obstacleKind != "scattered")
         throw InputError("--obstacles", obstacleKind, "must be clustered or scattered");
       bsaOptions.clustered = obstacleKind == "clustered";

@@ -306,7 +306,7 @@ T configValue(const YAML::Node& node, const std::string& file, const std::string
 
 std::string defaultConfig(const std::string& name) { return (std::filesystem::path(COVERKIT_CONFIG_DIR) / name).string(); }
 
-std::string runCoverageVsSize(const std::string& configFile, const std::string& outDir) {
+std::string runSweep(const std::string& configFile, const std::string& outDir) {
   YAML::Node cfg;
   try {
     cfg = YAML::LoadFile(configFile);
@@ -315,40 +315,63 @@ std::string runCoverageVsSize(const std::string& configFile, const std::string& 
   } catch (const YAML::Exception& e) {
     throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
   }
+  const std::string title = configValue<std::string>(cfg, configFile, "title", "Coverage and overlap against robot size");
   const auto plannerNames = configValue<std::vector<std::string>>(cfg, configFile, "planners", {"stc", "full_stc"});
   for (const auto& p : plannerNames)
     if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
-  const auto radii = configValue<std::vector<std::string>>(cfg, configFile, "radii", {"0.15", "0.2", "0.25", "0.3", "0.4", "0.5"});
-  std::vector<Rational> rs;
-  for (const auto& r : radii) {
-    rs.push_back(parseRational(r, configFile + ": radii", r));
-    if (rs.back() <= 0) throw InputError(configFile, "radii", r + ": must be > 0");
-  }
-  auto label = [&](std::size_t i) { return radii[i]; };  // as written in the config
+  const std::string vary = configValue<std::string>(cfg, configFile, "vary", "radius");
+  if (vary != "radius" && vary != "obstacles" && vary != "shape") throw InputError(configFile, "vary", vary + ": must be radius, obstacles or shape");
+  const std::vector<std::string> defaults = vary == "radius" ? std::vector<std::string>{"0.15", "0.2", "0.25", "0.3", "0.4", "0.5"}
+                                            : vary == "obstacles" ? std::vector<std::string>{"2", "5", "10", "15", "20", "25"}
+                                                                  : std::vector<std::string>{"rectangles", "rotated", "convex", "nonconvex", "stars", "discs"};
+  const auto values = configValue<std::vector<std::string>>(cfg, configFile, vary == "radius" ? "radii" : "values", defaults);
+  if (values.empty()) throw InputError(configFile, vary == "radius" ? "radii" : "values", "must not be empty");
+  const std::string fixedRadius = configValue<std::string>(cfg, configFile, "radius", "0.25");
   const YAML::Node wn = cfg["worlds"];
-  datasets::PolygonWorldSpec spec;
+  datasets::PolygonWorldSpec base;
   const int count = configValue<int>(wn, configFile, "count", 10);
-  spec.width = configValue<int>(wn, configFile, "width", 20);
-  spec.height = configValue<int>(wn, configFile, "height", 20);
-  spec.count = configValue<int>(wn, configFile, "obstacles", 10);
-  spec.minSize = configValue<double>(wn, configFile, "min_size", 1);
-  spec.maxSize = configValue<double>(wn, configFile, "max_size", 3);
-  const std::string shape = configValue<std::string>(wn, configFile, "shape", "mixed");
-  if (!datasets::parseObstacleShape(shape, spec.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + shape + "'");
+  base.width = configValue<int>(wn, configFile, "width", 20);
+  base.height = configValue<int>(wn, configFile, "height", 20);
+  base.count = configValue<int>(wn, configFile, "obstacles", 10);
+  base.minSize = configValue<double>(wn, configFile, "min_size", 1);
+  base.maxSize = configValue<double>(wn, configFile, "max_size", 3);
+  const std::string baseShape = configValue<std::string>(wn, configFile, "shape", "mixed");
+  if (!datasets::parseObstacleShape(baseShape, base.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + baseShape + "'");
   if (count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
+  // one setting per value: the radius, and the world spec
+  struct Setting {
+    Rational radius;
+    datasets::PolygonWorldSpec spec;
+  };
+  std::vector<Setting> settings;
+  for (const std::string& v : values) {
+    Setting st{parseRational(vary == "radius" ? v : fixedRadius, configFile + ": radius", vary == "radius" ? v : fixedRadius), base};
+    if (st.radius <= 0) throw InputError(configFile, vary == "radius" ? "radii" : "radius", (vary == "radius" ? v : fixedRadius) + ": must be > 0");
+    if (vary == "obstacles") {
+      char* end = nullptr;
+      const long c = std::strtol(v.c_str(), &end, 10);
+      if (*end != '\0' || c < 0 || c > 10000) throw InputError(configFile, "values", v + ": not an obstacle count");
+      st.spec.count = static_cast<int>(c);
+    }
+    if (vary == "shape" && !datasets::parseObstacleShape(v, st.spec.shape)) throw InputError(configFile, "values", "unknown shape '" + v + "'");
+    settings.push_back(st);
+  }
 
   std::ostringstream csv;
-  csv << "world,planner,radius,status,valid,coverable_coverage,area_coverage,subcell_coverage,swept_area_overlap,revisited_subcells,length,turns\n";
+  csv << "world," << vary << ",planner,radius,status,valid,coverable_coverage,area_coverage,subcell_coverage,swept_area_overlap,revisited_subcells,"
+      << "length,turns,turning_angle_deg\n";
   struct Acc {
-    double coverage = 0, overlap = 0, minCoverage = 1;
+    double coverage = 0, overlap = 0, turns = 0, angle = 0, minCoverage = 1;
     std::size_t n = 0, invalid = 0, failed = 0;
   };
-  std::map<std::string, std::map<std::string, Acc>> acc;  // planner → radius → sums
-  for (int seed = 1; seed <= count; ++seed) {
-    spec.seed = static_cast<std::uint64_t>(seed);
-    const Workspace world = datasets::generatePolygonWorld(spec);
-    for (std::size_t ri = 0; ri < rs.size(); ++ri) {
-      const Rational& r = rs[ri];
+  std::map<std::string, std::vector<Acc>> acc;  // planner → setting
+  for (const std::string& p : plannerNames) acc[p].resize(settings.size());
+  for (int seed = 1; seed <= count; ++seed)
+    for (std::size_t si = 0; si < settings.size(); ++si) {
+      datasets::PolygonWorldSpec spec = settings[si].spec;
+      spec.seed = static_cast<std::uint64_t>(seed);
+      const Workspace world = datasets::generatePolygonWorld(spec);
+      const Rational& r = settings[si].radius;
       Problem problem;
       problem.workspace = world;
       problem.robots.push_back({r, std::nullopt});
@@ -363,13 +386,13 @@ std::string runCoverageVsSize(const std::string& configFile, const std::string& 
       mo.cspace = &cspace;
       for (const std::string& p : plannerNames) {
         const RunResult res = runOnce(ctx, p, {}, 0, {}, mo);
-        Acc& a = acc[p][label(ri)];
-        const bool ok = succeeded(res.plan.status);
-        csv << seed << ',' << p << ',' << label(ri) << ',' << toString(res.plan.status) << ',' << (res.validation.valid ? 1 : 0) << ','
-            << fmt(res.metrics.coverableCoverage, 5) << ',' << fmt(res.metrics.areaCoverage, 5) << ',' << fmt(res.metrics.subcellCoverage, 5) << ','
-            << fmt(res.metrics.sweptAreaOverlap, 5) << ',' << res.metrics.revisitedSubcells << ',' << fmt(res.metrics.length, 3) << ','
-            << res.metrics.turns << '\n';
-        if (!ok) {  // e.g. STC when the start has no free mega-cell: counted, coverage 0
+        Acc& a = acc[p][si];
+        const Metrics& m = res.metrics;
+        csv << seed << ',' << values[si] << ',' << p << ',' << formatDouble(r.get_d()) << ',' << toString(res.plan.status) << ','
+            << (res.validation.valid ? 1 : 0) << ',' << fmt(m.coverableCoverage, 5) << ',' << fmt(m.areaCoverage, 5) << ',' << fmt(m.subcellCoverage, 5)
+            << ',' << fmt(m.sweptAreaOverlap, 5) << ',' << m.revisitedSubcells << ',' << fmt(m.length, 3) << ',' << m.turns << ','
+            << fmt(m.turningAngleDeg, 1) << '\n';
+        if (!succeeded(res.plan.status)) {  // e.g. STC when the start has no free mega-cell: coverage 0
           ++a.failed;
           ++a.n;
           a.minCoverage = 0;
@@ -380,37 +403,49 @@ std::string runCoverageVsSize(const std::string& configFile, const std::string& 
           continue;
         }
         ++a.n;
-        a.coverage += res.metrics.coverableCoverage;
-        a.overlap += res.metrics.sweptAreaOverlap;
-        a.minCoverage = std::min(a.minCoverage, res.metrics.coverableCoverage);
+        a.coverage += m.coverableCoverage;
+        a.overlap += m.sweptAreaOverlap;
+        a.turns += static_cast<double>(m.turns);
+        a.angle += m.turningAngleDeg;
+        a.minCoverage = std::min(a.minCoverage, m.coverableCoverage);
       }
     }
-  }
   std::ostringstream md;
-  md << "# Coverage and overlap against robot size\n\n" << count << " seeded " << spec.width << "×" << spec.height << " polygon worlds, " << spec.count
-     << " " << shape << " obstacles of " << spec.minSize << "-" << spec.maxSize << " m; sub-cells 2r; default start. Coverage: covered area / "
+  md << "# " << title << "\n\n" << count << " seeded " << base.width << "×" << base.height << " polygon worlds per setting ("
+     << (vary == "obstacles" ? std::string("obstacle count varied") : std::to_string(base.count) + " obstacles") << ", "
+     << (vary == "shape" ? std::string("shape varied") : baseShape) << ", " << base.minSize << "-" << base.maxSize << " m), "
+     << (vary == "radius" ? std::string("robot radius varied") : "r = " + fixedRadius) << "; sub-cells 2r; default start. Coverage: covered area / "
      << "coverable area (the start's C-free component ⊕ disc). Overlap: swept area counted with multiplicity / covered area − 1. "
      << "Plans that did not succeed count as coverage 0; invalid plans are counted and left out.\n\n"
-     << "| planner | r | plans | mean coverage | min coverage | mean overlap | not planned | invalid |\n|---|---|---|---|---|---|---|---|\n";
-  std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries;
+     << "| planner | " << vary << " | plans | mean coverage | min coverage | mean overlap | mean turns | mean turning angle (°) | not planned | invalid |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
+  std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries, turnSeries;
   for (const std::string& p : plannerNames)
-    for (std::size_t ri = 0; ri < rs.size(); ++ri) {
-      const Rational& r = rs[ri];
-      const std::string key = label(ri);
-      const Acc& a = acc[p][key];
+    for (std::size_t si = 0; si < settings.size(); ++si) {
+      const Acc& a = acc[p][si];
       const std::size_t valid = a.n - a.failed;
       const double mean = a.n ? a.coverage / static_cast<double>(a.n) : 0, overlap = valid ? a.overlap / static_cast<double>(valid) : 0;
-      md << "| " << p << " | " << key << " | " << a.n << " | " << fmt(mean, 4) << " | " << fmt(a.n ? a.minCoverage : 0, 4) << " | " << fmt(overlap, 3)
-         << " | " << a.failed << " | " << a.invalid << " |\n";
-      coverageSeries[p].emplace_back(r.get_d(), mean);
-      overlapSeries[p].emplace_back(r.get_d(), overlap);
+      const double turns = valid ? a.turns / static_cast<double>(valid) : 0, angle = valid ? a.angle / static_cast<double>(valid) : 0;
+      md << "| " << p << " | " << values[si] << " | " << a.n << " | " << fmt(mean, 4) << " | " << fmt(a.n ? a.minCoverage : 0, 4) << " | "
+         << fmt(overlap, 3) << " | " << fmt(turns, 1) << " | " << fmt(angle, 0) << " | " << a.failed << " | " << a.invalid << " |\n";
+      const double x = vary == "radius" ? settings[si].radius.get_d() : vary == "obstacles" ? static_cast<double>(settings[si].spec.count)
+                                                                                              : static_cast<double>(si);
+      coverageSeries[p].emplace_back(x, mean);
+      overlapSeries[p].emplace_back(x, overlap);
+      turnSeries[p].emplace_back(x, turns);
     }
-  const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap (swept twice or more)"}, "robot radius r",
-                                       {coverageSeries, overlapSeries});
+  if (vary == "shape") {
+    md << "\nx positions in the chart: ";
+    for (std::size_t si = 0; si < values.size(); ++si) md << (si ? ", " : "") << si << " = " << values[si];
+    md << ".\n";
+  }
+  const std::string xLabel = vary == "radius" ? "robot radius r" : vary == "obstacles" ? "obstacles per world" : "obstacle shape (see summary)";
+  const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns"}, xLabel,
+                                       {coverageSeries, overlapSeries, turnSeries});
   std::filesystem::create_directories(outDir);
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "coverage_vs_size.svg").string(), svg);
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "chart.svg").string(), svg);
   return md.str();
 }
 

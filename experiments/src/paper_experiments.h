@@ -22,11 +22,12 @@ std::string runBsaExperiment(const BsaExperimentOptions& options, const std::str
 /// OUT/scenario-K.svg, OUT/results.csv and OUT/summary.md. Returns the summary.
 std::string runTraccScenarios(const std::string& outDir);
 
-/// Smooth-STC paper, Fig 14 and 15: coverage of the coverable region and overlap against robot
-/// size, every planner of the config on the same seeded polygon worlds (config:
-/// experiments/configs/coverage_vs_size.yaml). Writes OUT/results.csv, OUT/summary.md and
-/// OUT/coverage_vs_size.svg. Bad config: InputError naming the file, the key and the problem.
-std::string runCoverageVsSize(const std::string& configFile, const std::string& outDir);
+/// Smooth-STC paper, Fig 14-17: coverage of the coverable region, overlap and turns of every planner
+/// of a YAML config on the same seeded polygon worlds, against the robot radius, the number of
+/// obstacles or their shape (`vary`). Shipped configs: experiments/configs/coverage_vs_size.yaml,
+/// coverage_vs_complexity.yaml, coverage_vs_shape.yaml. Writes OUT/results.csv, OUT/summary.md and
+/// OUT/chart.svg. Bad config: InputError naming the file, the key and the problem.
+std::string runSweep(const std::string& configFile, const std::string& outDir);
 
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);

@@ -115,7 +115,12 @@ JSON
 expect_bad "unknown experiment" "experiment: nope: unknown experiment" experiment nope --out "$T/out.json"
 # coverage against robot size from a config: a tiny one here; bad configs are exit 2 with no output
 printf 'planners: [stc, full_stc]\nradii: [0.5]\nworlds: {count: 1, width: 8, height: 8, obstacles: 2, shape: rotated}\n' > "$T/cvs.yaml"
-"$CK" experiment coverage-vs-size --config "$T/cvs.yaml" --out "$T/cvs" > /dev/null && [ "$(grep -c ',exact_solution,1,' "$T/cvs/results.csv")" -eq 2 ] && grep -q '<svg' "$T/cvs/coverage_vs_size.svg" && ok || bad "coverage-vs-size: $(cat "$T/cvs/results.csv" 2>/dev/null)"
+"$CK" experiment coverage-vs-size --config "$T/cvs.yaml" --out "$T/cvs" > /dev/null && [ "$(grep -c ',exact_solution,1,' "$T/cvs/results.csv")" -eq 2 ] && grep -q "<svg" "$T/cvs/chart.svg" && ok || bad "coverage-vs-size: $(cat "$T/cvs/results.csv" 2>/dev/null)"
+printf 'planners: [full_stc]\nvary: shape\nvalues: [discs, stars]\nradius: 0.5\nworlds: {count: 1, width: 8, height: 8, obstacles: 2}\n' > "$T/shape.yaml"
+"$CK" experiment sweep --config "$T/shape.yaml" --out "$T/shape" > /dev/null && grep -q '^1,discs,full_stc,0.5,exact_solution,1,' "$T/shape/results.csv" && grep -q '^1,stars,full_stc,' "$T/shape/results.csv" && ok || bad "sweep over shapes: $(cat "$T/shape/results.csv" 2>/dev/null)"
+printf 'vary: colour\n' > "$T/cvs-bad4.yaml"
+expect_bad "config vary" "cvs-bad4.yaml: vary: colour: must be radius, obstacles or shape" experiment sweep --config "$T/cvs-bad4.yaml" --out "$T/out.json"
+expect_bad "sweep without config" "--config: : the sweep needs a config file" experiment sweep --out "$T/out.json"
 printf 'planners: [stc, nope]\n' > "$T/cvs-bad1.yaml"; printf 'planners: [stc\n' > "$T/cvs-bad2.yaml"; printf 'radii: [0.2, -1]\n' > "$T/cvs-bad3.yaml"
 expect_bad "config unknown planner" "cvs-bad1.yaml: planners: unknown planner 'nope'" experiment coverage-vs-size --config "$T/cvs-bad1.yaml" --out "$T/out.json"
 expect_bad "config syntax" "cvs-bad2.yaml: line 2: YAML does not parse" experiment coverage-vs-size --config "$T/cvs-bad2.yaml" --out "$T/out.json"
