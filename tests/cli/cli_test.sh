@@ -120,7 +120,7 @@ printf 'planners: [full_stc]\nvary: shape\nvalues: [discs, stars]\nradius: 0.5\n
 "$CK" experiment sweep --config "$T/shape.yaml" --out "$T/shape" > /dev/null && grep -q '^1,discs,full_stc,0.5,exact_solution,1,' "$T/shape/results.csv" && grep -q '^1,stars,full_stc,' "$T/shape/results.csv" && ok || bad "sweep over shapes: $(cat "$T/shape/results.csv" 2>/dev/null)"
 printf 'vary: colour\n' > "$T/cvs-bad4.yaml"
 expect_bad "config vary" "cvs-bad4.yaml: vary: colour: must be radius, obstacles or shape" experiment sweep --config "$T/cvs-bad4.yaml" --out "$T/out.json"
-expect_bad "sweep without config" "--config: : the sweep needs a config file" experiment sweep --out "$T/out.json"
+expect_bad "sweep without config" "--config: the sweep needs a config file" experiment sweep --out "$T/out.json"
 printf 'planners: [stc, nope]\n' > "$T/cvs-bad1.yaml"; printf 'planners: [stc\n' > "$T/cvs-bad2.yaml"; printf 'radii: [0.2, -1]\n' > "$T/cvs-bad3.yaml"
 expect_bad "config unknown planner" "cvs-bad1.yaml: planners: unknown planner 'nope'" experiment coverage-vs-size --config "$T/cvs-bad1.yaml" --out "$T/out.json"
 expect_bad "config syntax" "cvs-bad2.yaml: line 2: YAML does not parse" experiment coverage-vs-size --config "$T/cvs-bad2.yaml" --out "$T/out.json"
