@@ -293,7 +293,7 @@ int main(int argc, char** argv) {
   experiments::BsaExperimentOptions bsaOptions;
   auto* experiment = app.add_subcommand("experiment", "reproduce a paper's experiment: CSV, table, chart (docs/experiments.md)");
   experiment->add_option("name", experimentName,
-                         "bsa-backtracking, tracc-scenarios, coverage-vs-size, coverage-vs-complexity, coverage-vs-shape, or sweep (with --config)")
+                         "bsa-backtracking, tracc-scenarios, coverage-vs-size, coverage-vs-complexity, coverage-vs-shape, coverage-vs-time, or sweep (with --config)")
       ->required();
   std::string experimentConfig;
   experiment->add_option("--config", experimentConfig, "the YAML config of a sweep (default for the coverage-vs-* names: experiments/configs/)");
@@ -427,6 +427,11 @@ int main(int argc, char** argv) {
       const std::map<std::string, std::string> sweeps{{"coverage-vs-size", "coverage_vs_size.yaml"},
                                                       {"coverage-vs-complexity", "coverage_vs_complexity.yaml"},
                                                       {"coverage-vs-shape", "coverage_vs_shape.yaml"}};
+      if (experimentName == "coverage-vs-time") {
+        const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig("coverage_vs_time.yaml") : experimentConfig;
+        std::cout << experiments::runCoverageVsTime(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
+        return 0;
+      }
       if (sweeps.count(experimentName) || experimentName == "sweep") {
         if (experimentName == "sweep" && experimentConfig.empty()) throw InputError("--config", "", "the sweep needs a config file");
         const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig(sweeps.at(experimentName)) : experimentConfig;
@@ -439,7 +444,7 @@ int main(int argc, char** argv) {
         return 0;
       }
       if (experimentName != "bsa-backtracking")
-        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-complexity, coverage-vs-shape, coverage-vs-size, sweep, tracc-scenarios)");
+        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-complexity, coverage-vs-shape, coverage-vs-size, coverage-vs-time, sweep, tracc-scenarios)");
       if (obstacleKind != "clustered" && obstacleKind != "scattered")
         throw InputError("--obstacles", obstacleKind, "must be clustered or scattered");
       bsaOptions.clustered = obstacleKind == "clustered";

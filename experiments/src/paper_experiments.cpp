@@ -449,4 +449,128 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
   return md.str();
 }
 
+namespace {
+/// The first `length` of a path made of lines (arcs through their polyline), as a path.
+Path prefix(const Path& path, double length) {
+  Path out;
+  out.start = path.start;
+  const std::vector<PointD> pts = path.polyline(1e-3);
+  double done = 0;
+  for (std::size_t i = 0; i + 1 < pts.size() && done < length; ++i) {
+    const double d = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
+    if (d == 0) continue;
+    const double t = std::min(1.0, (length - done) / d);
+    out.segments.push_back(PathSegment::line(pts[i], {pts[i].x + t * (pts[i + 1].x - pts[i].x), pts[i].y + t * (pts[i + 1].y - pts[i].y)}));
+    done += d;
+  }
+  return out;
+}
+}  // namespace
+
+std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir) {
+  YAML::Node cfg;
+  try {
+    cfg = YAML::LoadFile(configFile);
+  } catch (const YAML::BadFile&) {
+    throw InputError(configFile, "file", "cannot be read");
+  } catch (const YAML::Exception& e) {
+    throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
+  }
+  const auto plannerNames = configValue<std::vector<std::string>>(cfg, configFile, "planners", {"stc", "full_stc"});
+  for (const auto& p : plannerNames)
+    if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
+  const std::string rText = configValue<std::string>(cfg, configFile, "radius", "0.25");
+  const Rational r = parseRational(rText, configFile + ": radius", rText);
+  if (r <= 0) throw InputError(configFile, "radius", rText + ": must be > 0");
+  const double speed = configValue<double>(cfg, configFile, "speed", 0.2);
+  const int steps = configValue<int>(cfg, configFile, "steps", 12);
+  if (!(speed > 0)) throw InputError(configFile, "speed", "must be > 0");
+  if (steps < 1 || steps > 1000) throw InputError(configFile, "steps", "must be in 1..1000");
+  const YAML::Node wn = cfg["worlds"];
+  datasets::PolygonWorldSpec spec;
+  const int count = configValue<int>(wn, configFile, "count", 5);
+  spec.width = configValue<int>(wn, configFile, "width", 20);
+  spec.height = configValue<int>(wn, configFile, "height", 20);
+  spec.count = configValue<int>(wn, configFile, "obstacles", 10);
+  spec.minSize = configValue<double>(wn, configFile, "min_size", 1);
+  spec.maxSize = configValue<double>(wn, configFile, "max_size", 3);
+  const std::string shape = configValue<std::string>(wn, configFile, "shape", "mixed");
+  if (!datasets::parseObstacleShape(shape, spec.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + shape + "'");
+  if (count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
+
+  std::ostringstream csv;
+  csv << "world,planner,valid,time_s,coverage,coverage_error\n";
+  // coverage at step k of each world, per planner; the common time grid is per world (the slowest
+  // planner's time split in `steps`), reported as a fraction of it and in seconds
+  std::map<std::string, std::vector<double>> meanByStep;
+  std::map<std::string, double> meanTotalTime;
+  std::size_t invalid = 0;
+  for (int seed = 1; seed <= count; ++seed) {
+    spec.seed = static_cast<std::uint64_t>(seed);
+    const Workspace world = datasets::generatePolygonWorld(spec);
+    Problem problem;
+    problem.workspace = world;
+    problem.robots.push_back({r, std::nullopt});
+    const planners::PlanningContext ctx = planners::makeContext(problem);
+    const CSpace cspace(world, r);
+    MetricOptions mo = defaultMetricOptions();
+    mo.cspace = &cspace;
+    mo.speed = speed;
+    std::map<std::string, RunResult> runs;
+    double horizon = 0;
+    for (const std::string& p : plannerNames) {
+      runs[p] = runOnce(ctx, p, {}, 0, {}, mo);
+      invalid += !runs[p].validation.valid;
+      horizon = std::max(horizon, runs[p].metrics.length / speed);
+      meanTotalTime[p] += runs[p].metrics.length / speed / count;
+    }
+    MetricOptions raster = mo;  // prefixes: covered area only, rasterised with its bound
+    raster.coverable = false;
+    raster.exactAreaMaxSegments = raster.exactAreaMaxSegmentsClear = 0;
+    raster.rasterMaxPixels = 250'000;
+    for (const std::string& p : plannerNames) {
+      const RunResult& res = runs[p];
+      auto& series = meanByStep[p];
+      series.resize(static_cast<std::size_t>(steps) + 1, 0.0);
+      for (int k = 0; k <= steps; ++k) {
+        const double t = horizon * k / steps;
+        double coverage = 0, error = 0;
+        if (res.validation.valid && res.metrics.coverableArea > 0) {
+          if (t >= res.metrics.length / speed) {
+            coverage = res.metrics.coverableCoverage;
+          } else if (k > 0) {
+            const Metrics m = computeMetrics(ctx.problem, ctx.cells, {prefix(res.plan.paths[0], t * speed)}, raster);
+            coverage = m.coveredArea / res.metrics.coverableArea;
+            error = m.areaCoverageError * m.freeArea / res.metrics.coverableArea;
+          }
+        }
+        series[static_cast<std::size_t>(k)] += coverage / count;
+        csv << seed << ',' << p << ',' << (res.validation.valid ? 1 : 0) << ',' << fmt(t, 1) << ',' << fmt(coverage, 5) << ',' << fmt(error, 5) << '\n';
+      }
+    }
+  }
+  std::ostringstream md;
+  md << "# Coverage against time\n\n" << count << " seeded " << spec.width << "×" << spec.height << " polygon worlds, " << spec.count << " " << shape
+     << " obstacles, r = " << rText << ", speed " << speed << " m/s, default start. Each world's time axis is split in " << steps
+     << " steps up to the slowest planner's finish; coverage of the coverable region, averaged over the worlds (a planner that has "
+     << "finished keeps its final coverage). Invalid plans: " << invalid << ".\n\n| planner | mean time to finish (s) |";
+  for (int k = 1; k <= steps; ++k) md << " " << fmt(100.0 * k / steps, 0) << " % |";
+  md << "\n|---|---|";
+  for (int k = 1; k <= steps; ++k) md << "---|";
+  md << "\n";
+  std::map<std::string, std::vector<std::pair<double, double>>> chart;
+  for (const std::string& p : plannerNames) {
+    md << "| " << p << " | " << fmt(meanTotalTime[p], 0) << " |";
+    for (int k = 1; k <= steps; ++k) md << " " << fmt(meanByStep[p][static_cast<std::size_t>(k)], 3) << " |";
+    md << "\n";
+    for (int k = 0; k <= steps; ++k) chart[p].emplace_back(100.0 * k / steps, meanByStep[p][static_cast<std::size_t>(k)]);
+  }
+  const std::string svg = lineChartSvg({"mean coverage of the coverable region"}, "time, % of the slowest planner's", {chart});
+  std::filesystem::create_directories(outDir);
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
+  datasets::writeFileAtomically((std::filesystem::path(outDir) / "chart.svg").string(), svg);
+  return md.str();
+}
+
 }  // namespace coverkit::experiments

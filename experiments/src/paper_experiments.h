@@ -29,6 +29,12 @@ std::string runTraccScenarios(const std::string& outDir);
 /// OUT/chart.svg. Bad config: InputError naming the file, the key and the problem.
 std::string runSweep(const std::string& configFile, const std::string& outDir);
 
+/// Smooth-STC paper, Fig 13: coverage of the coverable region against time at constant speed, for
+/// every planner of the config (experiments/configs/coverage_vs_time.yaml) on seeded polygon worlds:
+/// the covered area of each path's prefix at common times (rasterised with its bound; the full path
+/// exact). Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg.
+std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir);
+
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);
 
