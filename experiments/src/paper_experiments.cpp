@@ -302,23 +302,49 @@ T configValue(const YAML::Node& node, const std::string& file, const std::string
   }
 }
 
-}  // namespace
 
-std::string defaultConfig(const std::string& name) { return (std::filesystem::path(COVERKIT_CONFIG_DIR) / name).string(); }
+/// What every experiment config shares: the planners and the seeded polygon worlds.
+struct ExperimentConfig {
+  YAML::Node root;
+  std::vector<std::string> planners;
+  datasets::PolygonWorldSpec worlds;
+  std::string shape;  ///< as written
+  int count = 0;      ///< worlds: seeds 1 … count
+};
 
-std::string runSweep(const std::string& configFile, const std::string& outDir) {
-  YAML::Node cfg;
+ExperimentConfig loadExperimentConfig(const std::string& configFile, int defaultCount) {
+  ExperimentConfig c;
   try {
-    cfg = YAML::LoadFile(configFile);
+    c.root = YAML::LoadFile(configFile);
   } catch (const YAML::BadFile&) {
     throw InputError(configFile, "file", "cannot be read");
   } catch (const YAML::Exception& e) {
     throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
   }
-  const std::string title = configValue<std::string>(cfg, configFile, "title", "Coverage and overlap against robot size");
-  const auto plannerNames = configValue<std::vector<std::string>>(cfg, configFile, "planners", {"stc", "full_stc"});
-  for (const auto& p : plannerNames)
+  c.planners = configValue<std::vector<std::string>>(c.root, configFile, "planners", {"stc", "full_stc"});
+  for (const auto& p : c.planners)
     if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
+  const YAML::Node wn = c.root["worlds"];
+  c.count = configValue<int>(wn, configFile, "count", defaultCount);
+  c.worlds.width = configValue<int>(wn, configFile, "width", 20);
+  c.worlds.height = configValue<int>(wn, configFile, "height", 20);
+  c.worlds.count = configValue<int>(wn, configFile, "obstacles", 10);
+  c.worlds.minSize = configValue<double>(wn, configFile, "min_size", 1);
+  c.worlds.maxSize = configValue<double>(wn, configFile, "max_size", 3);
+  c.shape = configValue<std::string>(wn, configFile, "shape", "mixed");
+  if (!datasets::parseObstacleShape(c.shape, c.worlds.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + c.shape + "'");
+  if (c.count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
+  return c;
+}
+}  // namespace
+
+std::string defaultConfig(const std::string& name) { return (std::filesystem::path(COVERKIT_CONFIG_DIR) / name).string(); }
+
+std::string runSweep(const std::string& configFile, const std::string& outDir) {
+  const ExperimentConfig ec = loadExperimentConfig(configFile, 10);
+  const YAML::Node& cfg = ec.root;
+  const std::vector<std::string>& plannerNames = ec.planners;
+  const std::string title = configValue<std::string>(cfg, configFile, "title", "Coverage and overlap against robot size");
   const std::string vary = configValue<std::string>(cfg, configFile, "vary", "radius");
   if (vary != "radius" && vary != "obstacles" && vary != "shape") throw InputError(configFile, "vary", vary + ": must be radius, obstacles or shape");
   const std::vector<std::string> defaults = vary == "radius" ? std::vector<std::string>{"0.15", "0.2", "0.25", "0.3", "0.4", "0.5"}
@@ -327,17 +353,9 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
   const auto values = configValue<std::vector<std::string>>(cfg, configFile, vary == "radius" ? "radii" : "values", defaults);
   if (values.empty()) throw InputError(configFile, vary == "radius" ? "radii" : "values", "must not be empty");
   const std::string fixedRadius = configValue<std::string>(cfg, configFile, "radius", "0.25");
-  const YAML::Node wn = cfg["worlds"];
-  datasets::PolygonWorldSpec base;
-  const int count = configValue<int>(wn, configFile, "count", 10);
-  base.width = configValue<int>(wn, configFile, "width", 20);
-  base.height = configValue<int>(wn, configFile, "height", 20);
-  base.count = configValue<int>(wn, configFile, "obstacles", 10);
-  base.minSize = configValue<double>(wn, configFile, "min_size", 1);
-  base.maxSize = configValue<double>(wn, configFile, "max_size", 3);
-  const std::string baseShape = configValue<std::string>(wn, configFile, "shape", "mixed");
-  if (!datasets::parseObstacleShape(baseShape, base.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + baseShape + "'");
-  if (count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
+  const datasets::PolygonWorldSpec& base = ec.worlds;
+  const std::string& baseShape = ec.shape;
+  const int count = ec.count;
   // one setting per value: the radius, and the world spec
   struct Setting {
     Rational radius;
@@ -468,17 +486,9 @@ Path prefix(const Path& path, double length) {
 }  // namespace
 
 std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir) {
-  YAML::Node cfg;
-  try {
-    cfg = YAML::LoadFile(configFile);
-  } catch (const YAML::BadFile&) {
-    throw InputError(configFile, "file", "cannot be read");
-  } catch (const YAML::Exception& e) {
-    throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
-  }
-  const auto plannerNames = configValue<std::vector<std::string>>(cfg, configFile, "planners", {"stc", "full_stc"});
-  for (const auto& p : plannerNames)
-    if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
+  const ExperimentConfig ec = loadExperimentConfig(configFile, 5);
+  const YAML::Node& cfg = ec.root;
+  const std::vector<std::string>& plannerNames = ec.planners;
   const std::string rText = configValue<std::string>(cfg, configFile, "radius", "0.25");
   const Rational r = parseRational(rText, configFile + ": radius", rText);
   if (r <= 0) throw InputError(configFile, "radius", rText + ": must be > 0");
@@ -486,17 +496,9 @@ std::string runCoverageVsTime(const std::string& configFile, const std::string& 
   const int steps = configValue<int>(cfg, configFile, "steps", 12);
   if (!(speed > 0)) throw InputError(configFile, "speed", "must be > 0");
   if (steps < 1 || steps > 1000) throw InputError(configFile, "steps", "must be in 1..1000");
-  const YAML::Node wn = cfg["worlds"];
-  datasets::PolygonWorldSpec spec;
-  const int count = configValue<int>(wn, configFile, "count", 5);
-  spec.width = configValue<int>(wn, configFile, "width", 20);
-  spec.height = configValue<int>(wn, configFile, "height", 20);
-  spec.count = configValue<int>(wn, configFile, "obstacles", 10);
-  spec.minSize = configValue<double>(wn, configFile, "min_size", 1);
-  spec.maxSize = configValue<double>(wn, configFile, "max_size", 3);
-  const std::string shape = configValue<std::string>(wn, configFile, "shape", "mixed");
-  if (!datasets::parseObstacleShape(shape, spec.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + shape + "'");
-  if (count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
+  datasets::PolygonWorldSpec spec = ec.worlds;
+  const std::string& shape = ec.shape;
+  const int count = ec.count;
 
   std::ostringstream csv;
   csv << "world,planner,valid,time_s,coverage,coverage_error\n";
