@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace coverkit {
 
@@ -410,6 +411,168 @@ CSpaceCells CSpace::classify(const CellGrid& grid, bool contours) const {
   clip.recurse(S, 0, 0, grid.megaCols(), grid.megaRows());
   std::sort(out.contours.begin(), out.contours.end(),
             [](const auto& a, const auto& b) { return std::make_pair(a.row, a.col) < std::make_pair(b.row, b.col); });
+  return out;
+}
+
+}  // namespace coverkit
+
+namespace coverkit {
+
+namespace {
+
+using XCurve = detail::Traits::X_monotone_curve_2;
+
+struct SweepBox {
+  Rational x0, y0, x1, y1;
+};
+
+SweepBox boxOf(const CSpace::SweepRequest& q) {
+  // the base is axis-parallel; the right of a → d is (dy, −dx) / |d − a|
+  const Rational dx = q.d.x - q.a.x, dy = q.d.y - q.a.y;
+  Point far1 = q.a, far2 = q.d;
+  if (dx != 0) {  // horizontal: the right is −y when going +x
+    const Rational off = dx > 0 ? Rational(-q.depth) : Rational(q.depth);
+    far1.y += off;
+    far2.y += off;
+  } else {
+    const Rational off = dy > 0 ? Rational(q.depth) : Rational(-q.depth);
+    far1.x += off;
+    far2.x += off;
+  }
+  SweepBox b{q.a.x, q.a.y, q.a.x, q.a.y};
+  for (const Point& p : {q.d, far1, far2}) {
+    if (p.x < b.x0) b.x0 = p.x;
+    if (p.x > b.x1) b.x1 = p.x;
+    if (p.y < b.y0) b.y0 = p.y;
+    if (p.y > b.y1) b.y1 = p.y;
+  }
+  return b;
+}
+
+CPolygonWithHoles boxPolygon(const SweepBox& b) {
+  return CPolygonWithHoles(curved({{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}}, true));
+}
+
+/// Consecutive pieces of one circle (or one line) become one piece.
+void appendMerged(std::vector<PathSegment>& out, std::vector<XCurve>& run) {
+  if (run.empty()) return;
+  PathSegment s = detail::toSegment(run.front());
+  s.to = detail::toSegment(run.back()).to;
+  out.push_back(s);
+  run.clear();
+}
+
+bool sameSupport(const XCurve& u, const XCurve& v) {
+  if (u.is_circular() != v.is_circular()) return false;
+  if (u.is_circular())
+    return u.orientation() == v.orientation() && u.supporting_circle().center() == v.supporting_circle().center() &&
+           u.supporting_circle().squared_radius() == v.supporting_circle().squared_radius();
+  return u.supporting_line() == v.supporting_line();
+}
+
+CSpace::Sweep sweepOne(const PolygonSet& S, const CSpace::SweepRequest& q) {
+  CSpace::Sweep out;
+  PolygonSet Q(boxPolygon(boxOf(q)));
+  Q.intersection(S);
+  std::vector<CPolygonWithHoles> pw;
+  Q.polygons_with_holes(std::back_inserter(pw));
+  const bool horizontal = q.a.y == q.d.y;
+  const K::FT line = ft(horizontal ? q.a.y : q.a.x);
+  const int sign = horizontal ? (q.d.x > q.a.x ? 1 : -1) : (q.d.y > q.a.y ? 1 : -1);
+  using CoordNT = detail::Traits::CoordNT;
+  auto onBase = [&](const XCurve& cv) {
+    if (cv.is_circular()) return false;
+    const CoordNT L(line);
+    return horizontal ? (CGAL::compare(cv.source().y(), L) == CGAL::EQUAL && CGAL::compare(cv.target().y(), L) == CGAL::EQUAL)
+                      : (CGAL::compare(cv.source().x(), L) == CGAL::EQUAL && CGAL::compare(cv.target().x(), L) == CGAL::EQUAL);
+  };
+  auto along = [&](const detail::Traits::Point_2& p) -> const CoordNT& { return horizontal ? p.x() : p.y(); };
+  // the entry: among the targets of base curves (the boundary runs along the base from d towards
+  // a), the one nearest a
+  std::vector<std::vector<XCurve>> loops;
+  int bestLoop = -1;
+  std::size_t bestCurve = 0;
+  for (const auto& p : pw) {
+    loops.emplace_back(p.outer_boundary().curves_begin(), p.outer_boundary().curves_end());
+    const auto& cs = loops.back();
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+      if (!onBase(cs[i])) continue;
+      if (bestLoop >= 0) {
+        const auto c = CGAL::compare(along(cs[i].target()), along(loops[static_cast<std::size_t>(bestLoop)][bestCurve].target()));
+        if (!((sign > 0 && c == CGAL::SMALLER) || (sign < 0 && c == CGAL::LARGER))) continue;
+      }
+      bestLoop = static_cast<int>(loops.size()) - 1;
+      bestCurve = i;
+    }
+  }
+  if (bestLoop < 0) return out;
+  const auto& cs = loops[static_cast<std::size_t>(bestLoop)];
+  const std::size_t n = cs.size();
+  std::size_t first = bestCurve;  // the first curve of the base run that ends at the entry
+  while (onBase(cs[(first + n - 1) % n]) && (first + n - 1) % n != bestCurve) first = (first + n - 1) % n;
+  out.reached = true;
+  std::vector<XCurve> run;
+  for (std::size_t k = (bestCurve + 1) % n; k != first; k = (k + 1) % n) {
+    if (!run.empty() && !sameSupport(run.back(), cs[k])) appendMerged(out.pieces, run);
+    run.push_back(cs[k]);
+  }
+  appendMerged(out.pieces, run);
+  const double a0 = horizontal ? q.a.x.get_d() : q.a.y.get_d(), d0 = horizontal ? q.d.x.get_d() : q.d.y.get_d();
+  auto toD = [](const detail::Traits::Point_2& p) { return PointD{CGAL::to_double(p.x()), CGAL::to_double(p.y())}; };
+  out.entry = toD(cs[bestCurve].target());
+  out.exit = toD(cs[first].source());
+  out.entryT = ((horizontal ? out.entry.x : out.entry.y) - a0) / (d0 - a0);
+  out.exitT = ((horizontal ? out.exit.x : out.exit.y) - a0) / (d0 - a0);
+  return out;
+}
+
+void sweepGroup(const PolygonSet& S, const std::vector<CSpace::SweepRequest>& requests, const std::vector<SweepBox>& boxes,
+                std::vector<std::size_t>& group, std::vector<CSpace::Sweep>& out) {
+  if (group.size() <= 2) {
+    for (std::size_t i : group) out[i] = sweepOne(S, requests[i]);
+    return;
+  }
+  SweepBox all = boxes[group.front()];
+  for (std::size_t i : group) {
+    const SweepBox& b = boxes[i];
+    all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
+  }
+  const bool alongX = Rational(all.x1 - all.x0) >= Rational(all.y1 - all.y0);
+  auto key = [&](std::size_t i) {
+    const SweepBox& b = boxes[i];
+    return std::make_pair(alongX ? Rational(b.x0 + b.x1).get_d() : Rational(b.y0 + b.y1).get_d(), i);
+  };
+  const auto mid = group.begin() + static_cast<std::ptrdiff_t>(group.size() / 2);
+  std::nth_element(group.begin(), mid, group.end(), [&](std::size_t i, std::size_t j) { return key(i) < key(j); });
+  for (int half = 0; half < 2; ++half) {
+    std::vector<std::size_t> part(half == 0 ? group.begin() : mid, half == 0 ? mid : group.end());
+    SweepBox b = boxes[part.front()];
+    for (std::size_t i : part) {
+      const SweepBox& c = boxes[i];
+      b = {std::min(b.x0, c.x0), std::min(b.y0, c.y0), std::max(b.x1, c.x1), std::max(b.y1, c.y1)};
+    }
+    PolygonSet clipped(boxPolygon(b));
+    clipped.intersection(S);
+    sweepGroup(clipped, requests, boxes, part, out);
+  }
+}
+
+}  // namespace
+
+std::vector<CSpace::Sweep> CSpace::sweeps(const std::vector<SweepRequest>& requests) const {
+  std::vector<Sweep> out(requests.size());
+  if (requests.empty()) return out;
+  std::vector<SweepBox> boxes;
+  for (const SweepRequest& q : requests) {
+    if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
+      throw std::invalid_argument("CSpace::sweeps: the base must be axis-parallel, non-empty, with depth > 0");
+    boxes.push_back(boxOf(q));
+  }
+  PolygonSet S;
+  S.insert(impl_->parts.begin(), impl_->parts.end());
+  std::vector<std::size_t> group(requests.size());
+  for (std::size_t i = 0; i < group.size(); ++i) group[i] = i;
+  sweepGroup(S, requests, boxes, group, out);
   return out;
 }
 

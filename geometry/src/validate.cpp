@@ -194,6 +194,9 @@ struct ClearanceChecker::Impl {
 ClearanceChecker::ClearanceChecker(const Workspace& w, const Rational& r) : impl_(std::make_unique<Impl>(w, r)) {}
 ClearanceChecker::~ClearanceChecker() = default;
 bool ClearanceChecker::clear(const Point& a, const Point& b) { return impl_->checker.segment(a, b).empty(); }
+bool ClearanceChecker::clearArc(const Point& from, const Point& to, const Point& center, bool ccw) {
+  return impl_->checker.arc(from, to, center, ccw).empty();
+}
 
 ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& paths, const ValidationOptions& o) {
   ValidationReport rep;

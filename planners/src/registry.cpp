@@ -2,6 +2,7 @@
 #include <coverkit/planners/registry.h>
 #include <coverkit/planners/stc_skeleton.h>
 #include <coverkit/planners/bsa.h>
+#include <coverkit/planners/smooth_stc.h>
 #include <coverkit/planners/tracc.h>
 
 #include <algorithm>
@@ -15,6 +16,8 @@ Registry& Registry::instance() {
     r.add("stc", [] { return std::make_unique<StcPlanner>(); });
     r.add("spiral_stc", [] { return std::make_unique<SpiralStcPlanner>(); });
     r.add("full_stc", [] { return std::make_unique<FullStcPlanner>(); });
+    r.add("smooth_stc", [] { return std::make_unique<SmoothStcPlanner>(); });
+    r.add("smooth_stc_online", [] { return std::make_unique<SmoothStcOnlinePlanner>(); });
     r.add("tracc", [] { return std::make_unique<TraccPlanner>(); });
     r.add("bsa_spiral", [] { return std::make_unique<BsaPlanner>(BsaPlanner::Filling::kSpiral); });
     r.add("bsa_zigzag", [] { return std::make_unique<BsaPlanner>(BsaPlanner::Filling::kZigzag); });

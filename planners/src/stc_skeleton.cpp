@@ -53,6 +53,9 @@ graph::SpanningTree StcSkeleton::growTree(const graph::GridGraph& g, int root, c
   return graph::buildTree(g, root, s, rootFirst);
 }
 
+void StcSkeleton::prepare(const PlanningContext&, const ParamSet&, Plan&) const {}
+void StcSkeleton::refinePath(const PlanningContext&, const std::vector<CellIndex>&, const ParamSet&, Path&, Plan&) const {}
+
 int StcSkeleton::startNode(const PlanningContext&, const graph::GridGraph& g, CellIndex s) const {
   const int v = g.id(s.col / 2, s.row / 2);
   return g.active[static_cast<std::size_t>(v)] ? v : -1;
@@ -90,6 +93,7 @@ Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const
   Point start;
   CellIndex s;
   if (!beginOnCells(ctx, name(), false, plan, start, s)) return plan;
+  prepare(ctx, params, plan);
   // A move that no double can make safe (a sub-cell squeezed to exactly 2r between obstacles, at a
   // centre that is not a double) leaves its sub-cells out: plan again without them (walk_path.h).
   const bool unsafe = withoutUnplaceableCells(ctx, s, plan, [&](const PlanningContext& c) {
@@ -148,6 +152,7 @@ StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const Par
     return Outcome::kDone;
   }
   plan.paths[0] = std::move(placed.path);
+  if (placed.unsafeCells.empty()) refinePath(ctx, walk, params, plan.paths[0], plan);
   plan.statistics["moves_checked_exactly"] = static_cast<double>(placed.checkedMoves);
   plan.statistics["moves_repaired"] = static_cast<double>(placed.repairedMoves);
   plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);

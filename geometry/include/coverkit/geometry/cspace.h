@@ -103,6 +103,26 @@ public:
   /// mega-cells get their C-free pieces and boundary chains.
   CSpaceCells classify(const CellGrid& grid, bool contours = true) const;
 
+  /// A sweep of the rectangle U beside an axis-parallel base segment: U has the base [a, d] as one
+  /// side and extends `depth` to the right of the direction a → d. The sweep is the boundary of
+  /// U ∩ C-free, counter-clockwise (C-free on the left), from the point `entry` of the base nearest
+  /// a that lies in C-free to the point `exit` where that boundary comes back to the base for the
+  /// last time (the far end of the base interval that holds `entry`). Smooth-STC's leaf rule
+  /// (planners/src/smooth_stc.cpp) is built on it.
+  struct SweepRequest {
+    Point a, d;
+    Rational depth;
+  };
+  struct Sweep {
+    bool reached = false;              ///< some point of the base lies in C-free
+    std::vector<PathSegment> pieces;   ///< from entry to exit, in doubles (arcs merged per circle)
+    PointD entry, exit;                ///< on the base (doubles of exact points)
+    double entryT = 0, exitT = 0;      ///< their places on the base, 0 at a, 1 at d
+  };
+  /// All requests at once: C-free is clipped recursively to boxes around groups of requests, so the
+  /// cost follows the requests and the curves near them, not requests × all curves.
+  std::vector<Sweep> sweeps(const std::vector<SweepRequest>& requests) const;
+
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -34,6 +34,12 @@ protected:
   virtual std::vector<CellIndex> circumnavigate(const PlanningContext& context, const graph::GridGraph& world,
                                                 graph::SpanningTree& tree, CellIndex start, const ParamSet& params,
                                                 Plan& plan) const;
+  /// Hook 4: once per plan, before any attempt (default: nothing). Smooth-STC builds its C-space.
+  virtual void prepare(const PlanningContext& context, const ParamSet& params, Plan& plan) const;
+  /// Hook 5: the placed path of the walk may be changed (default: left as it is). Smooth-STC
+  /// inserts its sweeps of partially occupied mega-cells. `walk` is the sub-cell walk placed.
+  virtual void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
+                          Plan& plan) const;
   /// The graph node the start sub-cell belongs to, or -1 (default: its mega-cell, when active).
   virtual int startNode(const PlanningContext& context, const graph::GridGraph& g, CellIndex start) const;
   /// The cells a start must lie in (for the invalid_start message).
