@@ -106,6 +106,8 @@ struct CSpace::Impl {
         if (!(*f)->contained()) return false;
     return true;
   }
+  /// C-free as one set for CSpace::sweeps (built on first use).
+  std::unique_ptr<PolygonSet> sweepSet;
   std::vector<CPolygonWithHoles> parts;      ///< components of C-free, largest first
   std::vector<PolygonSet> partSets;          ///< one set per component, for point location
   std::vector<double> areas;
@@ -568,8 +570,11 @@ std::vector<CSpace::Sweep> CSpace::sweeps(const std::vector<SweepRequest>& reque
       throw std::invalid_argument("CSpace::sweeps: the base must be axis-parallel, non-empty, with depth > 0");
     boxes.push_back(boxOf(q));
   }
-  PolygonSet S;
-  S.insert(impl_->parts.begin(), impl_->parts.end());
+  if (!impl_->sweepSet) {
+    impl_->sweepSet = std::make_unique<PolygonSet>();
+    impl_->sweepSet->insert(impl_->parts.begin(), impl_->parts.end());
+  }
+  const PolygonSet& S = *impl_->sweepSet;
   std::vector<std::size_t> group(requests.size());
   for (std::size_t i = 0; i < group.size(); ++i) group[i] = i;
   sweepGroup(S, requests, boxes, group, out);

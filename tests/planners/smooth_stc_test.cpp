@@ -1,0 +1,161 @@
+// Smooth-STC offline and online: STC's path where nothing is partially occupied, exact C-space
+// sweeps (segments and arcs) of partially occupied mega-cells elsewhere, every plan exactly safe,
+// more of the coverable region than STC and Full-STC on worlds whose obstacles are not aligned with
+// the grid, no reversing spikes, online = offline with the paper's tree rule.
+#include "helpers/checkers.h"
+
+#include <coverkit/datasets/generators.h>
+#include <coverkit/geometry/cspace.h>
+#include <coverkit/planners/registry.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace coverkit;
+
+namespace {
+
+Workspace polygonWorld(std::uint64_t seed, int size, int obstacles) {
+  datasets::PolygonWorldSpec s;
+  s.width = s.height = size;
+  s.count = obstacles;
+  s.shape = datasets::ObstacleShape::kMixed;
+  s.minSize = 1;
+  s.maxSize = 2.5;
+  s.seed = seed;
+  return datasets::generatePolygonWorld(s);
+}
+
+double coverable(const planners::PlanningContext& ctx, const Plan& plan) {
+  MetricOptions o;
+  o.coverable = true;
+  return computeMetrics(ctx.problem, ctx.cells, plan.paths, o).coverableCoverage;
+}
+
+/// A joint where the path turns back on itself (heading change above 179°) between pieces longer
+/// than 1e-6 of the sub-cell: a reversing spike.
+::testing::AssertionResult noReversingSpike(const Plan& plan, double D) {
+  const auto& s = plan.paths.at(0).segments;
+  auto dirAt = [](const PathSegment& p, bool atEnd, double& x, double& y) {
+    if (p.kind == PathSegment::Kind::kLine) {
+      x = p.to.x - p.from.x, y = p.to.y - p.from.y;
+    } else {  // tangent of the arc at the end asked for
+      const PointD q = atEnd ? p.to : p.from;
+      x = -(q.y - p.center.y), y = q.x - p.center.x;
+      if (!p.ccw) x = -x, y = -y;
+    }
+    const double n = std::hypot(x, y);
+    x /= n, y /= n;
+  };
+  for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+    if (s[i].length() < 1e-6 * D || s[i + 1].length() < 1e-6 * D) continue;
+    double ax, ay, bx, by;
+    dirAt(s[i], true, ax, ay);
+    dirAt(s[i + 1], false, bx, by);
+    if (ax * bx + ay * by < std::cos(179.0 * M_PI / 180))
+      return ::testing::AssertionFailure() << "reversal at segment " << i << " (" << s[i].to.x << ", " << s[i].to.y << ")";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+TEST(SmoothStc, WithoutPartialMegaCellsItIsStc) {
+  Workspace w;
+  Region reg;
+  reg.outer = {{0, 0}, {8, 0}, {8, 6}, {0, 6}};
+  w.regions.push_back(reg);
+  const auto ctx = testing_helpers::contextFor(w, Rational(1, 4));
+  const Plan stc = planners::runPlanner("stc", ctx, {});
+  const Plan kept = planners::runPlanner("smooth_stc", ctx, {{"corners", "keep"}});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, kept));
+  EXPECT_EQ(testing_helpers::pathJsonOf(stc), testing_helpers::pathJsonOf(kept));
+  EXPECT_EQ(kept.statistics.at("sweeps"), 0);
+  // with corners filled: still valid, and it sweeps the wedges STC leaves at its turns
+  const Plan filled = planners::runPlanner("smooth_stc", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, filled));
+  EXPECT_GT(filled.statistics.at("corners_filled"), 0);
+  EXPECT_GT(coverable(ctx, filled), coverable(ctx, stc));
+  EXPECT_GT(coverable(ctx, filled), 0.999);
+}
+
+TEST(SmoothStc, SweepsPartialMegaCellsExactlyAndCoversMoreThanStcAndFullStc) {
+  double sumSmooth = 0, sumFull = 0, sumStc = 0;
+  int worlds = 0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Workspace w = polygonWorld(seed, 12, 6);
+    const auto ctx = testing_helpers::contextFor(w, Rational(1, 4));
+    const Plan smooth = planners::runPlanner("smooth_stc", ctx, {});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, smooth)) << "seed " << seed;
+    // also clear of the C-space's conservative C-obstacles, piece by piece
+    const CSpace cs(ctx.problem.workspace, ctx.problem.robots[0].radius);
+    ValidationOptions vo;
+    vo.cspace = &cs;
+    EXPECT_TRUE(validatePaths(ctx.problem, smooth.paths, vo).valid) << "seed " << seed;
+    EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, smooth)) << "seed " << seed;
+    EXPECT_TRUE(noReversingSpike(smooth, 0.5)) << "seed " << seed;
+    EXPECT_GT(smooth.statistics.at("sweeps"), 0) << "seed " << seed;
+    EXPECT_GT(smooth.statistics.at("arcs"), 0) << "seed " << seed;
+    EXPECT_EQ(smooth.statistics.at("sweeps_rejected"), 0) << "seed " << seed;
+    bool hasArc = false;
+    for (const PathSegment& s : smooth.paths[0].segments) hasArc = hasArc || s.kind == PathSegment::Kind::kArc;
+    EXPECT_TRUE(hasArc);
+    EXPECT_EQ(testing_helpers::pathJsonOf(smooth), testing_helpers::pathJsonOf(planners::runPlanner("smooth_stc", ctx, {})));
+    const double cSmooth = coverable(ctx, smooth);
+    const double cFull = coverable(ctx, planners::runPlanner("full_stc", ctx, {}));
+    const double cStc = coverable(ctx, planners::runPlanner("stc", ctx, {}));
+    EXPECT_GT(cSmooth, cFull) << "seed " << seed;
+    EXPECT_GT(cSmooth, cStc) << "seed " << seed;
+    EXPECT_GT(cSmooth, 0.97) << "seed " << seed;
+    sumSmooth += cSmooth, sumFull += cFull, sumStc += cStc;
+    ++worlds;
+  }
+  EXPECT_GT(sumSmooth / worlds, 0.98);
+  EXPECT_GT(sumSmooth - sumFull, 0.02 * worlds);
+}
+
+TEST(SmoothStc, EveryEntrySweepsAtLeastWhatTheParentsEntryDoes) {
+  for (std::uint64_t seed = 11; seed <= 13; ++seed) {
+    const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 12, 8), Rational(1, 4));
+    const Plan every = planners::runPlanner("smooth_stc", ctx, {});
+    const Plan parent = planners::runPlanner("smooth_stc", ctx, {{"entries", "parent"}});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, parent));
+    EXPECT_GE(every.statistics.at("sweeps"), parent.statistics.at("sweeps"));
+    EXPECT_EQ(every.statistics.at("partial_mega_cells_swept"), parent.statistics.at("partial_mega_cells_swept"));
+    EXPECT_GE(coverable(ctx, every) + 1e-3, coverable(ctx, parent)) << "seed " << seed;
+  }
+}
+
+TEST(SmoothStc, OnlineEqualsOfflineWithThePapersTree) {
+  for (std::uint64_t seed = 21; seed <= 23; ++seed) {
+    const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 10, 5), Rational(1, 4));
+    // corners kept: whether a wedge is already swept is decided in doubles, and a sample point at
+    // exactly r from another lane may fall either way under last-bit differences
+    const Plan offline = planners::runPlanner("smooth_stc", ctx, {{"corners", "keep"}});
+    const Plan online = planners::runPlanner("smooth_stc_online", ctx, {{"corners", "keep"}});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, online));
+    // The same exact geometry and the same tree; the doubles may differ in the last bits (and a
+    // piece of zero length may appear or not), as the online robot's C-space is clipped to one
+    // mega-cell at a time and CGAL rounds a + b·sqrt(c) by its representation.
+    EXPECT_EQ(testing_helpers::pathJsonOf(planners::runPlanner("stc", ctx, {})),
+              testing_helpers::pathJsonOf(planners::runPlanner("spiral_stc", ctx, {})));
+    EXPECT_NEAR(offline.paths[0].length(), online.paths[0].length(), 1e-6) << "seed " << seed;
+    EXPECT_EQ(offline.statistics.at("sweeps"), online.statistics.at("sweeps"));
+    EXPECT_EQ(offline.statistics.at("arcs"), online.statistics.at("arcs"));
+    EXPECT_NEAR(coverable(ctx, offline), coverable(ctx, online), 1e-6) << "seed " << seed;
+    EXPECT_NEAR(coverable(ctx, planners::runPlanner("smooth_stc", ctx, {})),
+                coverable(ctx, planners::runPlanner("smooth_stc_online", ctx, {})), 2e-3) << "seed " << seed;
+    EXPECT_GT(online.statistics.at("sensor_queries"), 0);
+  }
+}
+
+TEST(SmoothStc, NonDoubleCentresStayExactlySafe) {
+  // r = 0.15: sub-cell centres 0.15 + 0.3k are not doubles, obstacles on a 1/100 lattice
+  for (std::uint64_t seed = 31; seed <= 33; ++seed) {
+    const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 8, 5), Rational(3, 20));
+    const Plan smooth = planners::runPlanner("smooth_stc", ctx, {});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, smooth)) << "seed " << seed;
+    EXPECT_TRUE(noReversingSpike(smooth, 0.3)) << "seed " << seed;
+  }
+}
