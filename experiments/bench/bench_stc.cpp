@@ -4,6 +4,7 @@
 #include <coverkit/datasets/generators.h>
 #include <coverkit/planners/registry.h>
 
+#include <chrono>
 #include <cmath>
 
 using namespace coverkit;
@@ -66,3 +67,29 @@ static void BM_FullStc(benchmark::State& state) {
   state.counters["checked"] = checked;
 }
 BENCHMARK(BM_FullStc)->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {0, 1}})->Unit(benchmark::kMillisecond);
+
+// Smooth-STC against STC on the same maps, 10^3 … 10^6 mega-cells (4·10^3 … 4·10^6 sub-cells):
+// time of each and their ratio per map (counters), with Smooth-STC's phases.
+static void BM_SmoothStcVsStc(benchmark::State& state) {
+  int side = 0;
+  const planners::PlanningContext ctx = gridContext(4 * state.range(0), side);
+  double smoothSeconds = 0, stcSeconds = 0;
+  for (auto _ : state) {
+    auto t0 = std::chrono::steady_clock::now();
+    Plan smooth = planners::runPlanner("smooth_stc", ctx, {});
+    auto t1 = std::chrono::steady_clock::now();
+    Plan stc = planners::runPlanner("stc", ctx, {});
+    auto t2 = std::chrono::steady_clock::now();
+    smoothSeconds = std::chrono::duration<double>(t1 - t0).count();
+    stcSeconds = std::chrono::duration<double>(t2 - t1).count();
+    for (const auto& [phase, seconds] : smooth.timings) state.counters["t_" + phase] = seconds;
+    state.counters["sweeps"] = smooth.statistics["sweeps"];
+    benchmark::DoNotOptimize(smooth);
+    benchmark::DoNotOptimize(stc);
+  }
+  state.counters["mega_cells"] = static_cast<double>(side) * side / 4;
+  state.counters["smooth_s"] = smoothSeconds;
+  state.counters["stc_s"] = stcSeconds;
+  state.counters["ratio"] = stcSeconds > 0 ? smoothSeconds / stcSeconds : 0;
+}
+BENCHMARK(BM_SmoothStcVsStc)->RangeMultiplier(10)->Range(1'000, 1'000'000)->Iterations(1)->Unit(benchmark::kMillisecond);

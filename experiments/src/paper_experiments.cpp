@@ -437,7 +437,7 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
      << "Plans that did not succeed count as coverage 0; invalid plans are counted and left out.\n\n"
      << "| planner | " << vary << " | plans | mean coverage | min coverage | mean overlap | mean turns | mean turning angle (°) | not planned | invalid |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
-  std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries, turnSeries;
+  std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries, turnSeries, angleSeries;
   for (const std::string& p : plannerNames)
     for (std::size_t si = 0; si < settings.size(); ++si) {
       const Acc& a = acc[p][si];
@@ -451,6 +451,7 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
       coverageSeries[p].emplace_back(x, mean);
       overlapSeries[p].emplace_back(x, overlap);
       turnSeries[p].emplace_back(x, turns);
+      angleSeries[p].emplace_back(x, angle);
     }
   if (vary == "shape") {
     md << "\nx positions in the chart: ";
@@ -458,8 +459,8 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
     md << ".\n";
   }
   const std::string xLabel = vary == "radius" ? "robot radius r" : vary == "obstacles" ? "obstacles per world" : "obstacle shape (see summary)";
-  const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns"}, xLabel,
-                                       {coverageSeries, overlapSeries, turnSeries});
+  const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns", "mean total turning angle (°)"},
+                                       xLabel, {coverageSeries, overlapSeries, turnSeries, angleSeries});
   std::filesystem::create_directories(outDir);
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
   datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
