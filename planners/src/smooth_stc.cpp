@@ -116,8 +116,7 @@ std::vector<Opening> openings(const CellGrid& cells, const std::vector<CellIndex
 /// segment of the path (runs are merged, or cut near obstacles); the sweep replaces the part of it
 /// between its entry and exit.
 void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const std::vector<Opening>& open,
-                  const std::vector<CSpace::Sweep>& sweeps, Path& path, Plan& plan) {
-  ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
+                  const std::vector<CSpace::Sweep>& sweeps, ClearanceChecker& check, Path& path, Plan& plan) {
   auto exact = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
   std::vector<PathSegment> out;
   out.reserve(path.segments.size());
@@ -135,24 +134,18 @@ void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk
     const bool horizontal = o.dir == 0 || o.dir == 2;
     const double sign = (o.dir == 0 || o.dir == 1) ? 1 : -1;
     const PointD A = ctx.cells.subCenterD(walk[o.move].col, walk[o.move].row);
-    (void)walk;
     auto alongOf = [&](PointD p) { return sign * (horizontal ? p.x : p.y); };
     auto fixedOf = [&](PointD p) { return horizontal ? p.y : p.x; };
     // the segment (current remainder first) holding the move
     std::size_t at = k;
-    bool found = false;
-    PathSegment seg;
     for (; at < path.segments.size(); ++at) {
-      seg = path.segments[at];
-      if (seg.kind != PathSegment::Kind::kLine) continue;
-      const bool axis = horizontal ? seg.from.y == seg.to.y : seg.from.x == seg.to.x;
-      if (!axis || std::abs(fixedOf(seg.from) - fixedOf(A)) > tol) continue;
-      if (alongOf(seg.to) - alongOf(seg.from) <= 0) continue;
-      if (alongOf(s.entry) < alongOf(seg.from) - tol || alongOf(s.exit) > alongOf(seg.to) + tol) continue;
-      found = true;
-      break;
+      const PathSegment& seg = path.segments[at];
+      const bool axis = seg.kind == PathSegment::Kind::kLine && (horizontal ? seg.from.y == seg.to.y : seg.from.x == seg.to.x);
+      if (axis && std::abs(fixedOf(seg.from) - fixedOf(A)) <= tol && alongOf(seg.to) > alongOf(seg.from) &&
+          alongOf(s.entry) >= alongOf(seg.from) - tol && alongOf(s.exit) <= alongOf(seg.to) + tol)
+        break;
     }
-    if (!found) {
+    if (at == path.segments.size()) {
       ++missed;
       continue;
     }
@@ -260,10 +253,9 @@ private:
 /// cell ahead), or cut from P − r·u to P − r·v and go on from there (needs room on W's side). The
 /// first whose new moves are exactly clear is taken; otherwise the turn stays. Whether W is swept
 /// by some other piece is decided in doubles (it only decides whether to try).
-void fillCorners(const PlanningContext& ctx, Path& path, Plan& plan) {
+void fillCorners(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
   const double r = ctx.problem.robots.at(0).radius.get_d();
   const SegmentBuckets buckets(path, r);
-  ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
   auto exact = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
   auto axisDir = [](const PathSegment& s, double& ux, double& uy, double& len) {
     if (s.kind != PathSegment::Kind::kLine) return false;
@@ -342,8 +334,9 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
     for (const Opening& o : open) requests.push_back(requestOf(ctx.cells, walk, o));
     sweeps = state.cspace->sweeps(requests);
   }
-  insertSweeps(ctx, walk, open, sweeps, path, plan);
-  if (params.text("corners") == "fill") fillCorners(ctx, path, plan);
+  ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
+  insertSweeps(ctx, walk, open, sweeps, check, path, plan);
+  if (params.text("corners") == "fill") fillCorners(ctx, check, path, plan);
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());
 }
 
