@@ -1,11 +1,17 @@
 // The independent validator. Exact: line pieces with CGAL's Cartesian kernel over GMP rationals
 // (squared distances are rational), arcs with CORE::Expr (exact square roots). Doubles are used
-// only to skip edges that are certainly far away (margin far above double rounding).
+// only to skip edges that are certainly far away (margin far above double rounding). Between the
+// two sits a filter, as in CGAL's filtered kernels: the same distance is bounded from below with
+// interval arithmetic (CGAL::Interval_nt, directed rounding, inputs enclosed by to_interval); an
+// edge whose lower bound is certainly ≥ r is clear, and only the others are decided exactly. Where
+// a branch of the exact computation cannot be decided on intervals, the filter takes the smaller
+// of its values (or gives up), so it never says "clear" where the exact test would not.
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
 
 #include <CGAL/CORE_Expr.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/mpq_class.h>
 #include <CGAL/squared_distance_2.h>
@@ -50,6 +56,99 @@ Expr pointSegDistance(const ExprPoint& p, const ExprPoint& a, const ExprPoint& b
   return abs(cross(ab, ap)) / sqrt(l2);
 }
 
+// --- the interval filter: lower bounds of the distances the exact code computes -----------------
+
+using I = CGAL::Interval_nt<true>;
+struct IPoint {
+  I x, y;
+};
+I iv(const Rational& q) { return I(CGAL::to_interval(q)); }
+IPoint ip(const Point& p) { return {iv(p.x), iv(p.y)}; }
+IPoint isub(const IPoint& a, const IPoint& b) { return {a.x - b.x, a.y - b.y}; }
+I icross(const IPoint& a, const IPoint& b) { return a.x * b.y - a.y * b.x; }
+I idot(const IPoint& a, const IPoint& b) { return a.x * b.x + a.y * b.y; }
+I inorm(const IPoint& a) { return CGAL::sqrt(CGAL::square(a.x) + CGAL::square(a.y)); }
+I imin(const I& a, const I& b) { return CGAL::min(a, b); }
+
+/// Three-valued truth: 0 no, 1 yes, 2 undecided on intervals.
+int tri(CGAL::Uncertain<bool> u) { return CGAL::is_certain(u) ? (CGAL::get_certain(u) ? 1 : 0) : 2; }
+int triAnd(int a, int b) { return (a == 0 || b == 0) ? 0 : (a == 1 && b == 1 ? 1 : 2); }
+int triNot(int a) { return a == 2 ? 2 : 1 - a; }
+
+/// ≤ the distance from p to segment ab (pointSegDistance); 0 when ab may be degenerate.
+I lbPointSeg(const IPoint& p, const IPoint& a, const IPoint& b) {
+  const IPoint ab = isub(b, a), ap = isub(p, a);
+  const I l2 = CGAL::square(ab.x) + CGAL::square(ab.y);
+  if (!CGAL::certainly(l2 > 0)) return I(0);
+  const I t = idot(ap, ab) / l2;
+  if (CGAL::certainly(t <= 0)) return inorm(ap);
+  if (CGAL::certainly(t >= 1)) return inorm(isub(p, b));
+  return CGAL::abs(icross(ab, ap)) / CGAL::sqrt(l2);  // the distance to the line: ≤ every branch
+}
+
+/// ≤ the distance between segments ab and cd; 0 when they may cross.
+I lbSegSeg(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d) {
+  auto sameSide = [](const I& u, const I& v) {
+    return (CGAL::certainly(u > 0) && CGAL::certainly(v > 0)) || (CGAL::certainly(u < 0) && CGAL::certainly(v < 0));
+  };
+  const I o1 = icross(isub(b, a), isub(c, a)), o2 = icross(isub(b, a), isub(d, a));
+  const I o3 = icross(isub(d, c), isub(a, c)), o4 = icross(isub(d, c), isub(b, c));
+  if (!sameSide(o1, o2) && !sameSide(o3, o4)) return I(0);
+  return imin(imin(lbPointSeg(a, c, d), lbPointSeg(b, c, d)), imin(lbPointSeg(c, a, b), lbPointSeg(d, a, b)));
+}
+
+/// The arc of Checker::arc on intervals: ≤ the distance the exact code finds to edge pq.
+class ArcFilter {
+public:
+  ArcFilter(const Point& f, const Point& t, const Point& c, const Rational& rho2, bool ccw)
+      : C_(ip(c)), F_(ip(f)), T_(ip(t)), rho2_(iv(rho2)), rho_(CGAL::sqrt(rho2_)), full_(f == t) {
+    B_ = isub(T_, C_);
+    const I lenB = inorm(B_);
+    Tp_ = {C_.x + B_.x * rho_ / lenB, C_.y + B_.y * rho_ / lenB};
+    A_ = isub(F_, C_);
+    if (!ccw) std::swap(A_, B_);
+  }
+  I lowerBound(const Point& p, const Point& q) const {
+    const IPoint P = ip(p), Q = ip(q), d = isub(Q, P), pc = isub(P, C_);
+    const I qa = CGAL::square(d.x) + CGAL::square(d.y), qb = 2 * idot(pc, d),
+            qc = CGAL::square(pc.x) + CGAL::square(pc.y) - rho2_;
+    if (!CGAL::certainly(qa > 0)) return I(0);
+    const I disc = CGAL::square(qb) - 4 * qa * qc;
+    if (!CGAL::certainly(disc < 0)) {
+      const I sq = CGAL::sqrt(disc);
+      for (const I& s : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
+        if (CGAL::certainly(s < 0) || CGAL::certainly(s > 1)) continue;
+        if (inRange(isub({P.x + s * d.x, P.y + s * d.y}, C_)) != 0) return I(0);  // may meet the arc
+      }
+    }
+    I best = imin(imin(lbPointSeg(F_, P, Q), lbPointSeg(Tp_, P, Q)),
+                  imin(imin(pointArc(P), pointArc(Q)), lbPointSeg(T_, P, Q)));
+    const I s = -idot(pc, d) / qa;
+    const IPoint v = isub({P.x + s * d.x, P.y + s * d.y}, C_);
+    const I hd = inorm(v);
+    if (triAnd(triAnd(tri(s > 0), tri(s < 1)), triAnd(tri(hd >= rho_), inRange(v))) != 0) best = imin(best, hd - rho_);
+    return best;
+  }
+
+private:
+  int inRange(const IPoint& v) const {
+    if (full_) return 1;
+    const I ab = icross(A_, B_);
+    if (CGAL::certainly(ab > 0)) return triAnd(tri(icross(A_, v) >= 0), tri(icross(v, B_) >= 0));
+    if (CGAL::certainly(ab < 0)) return triNot(triAnd(tri(icross(B_, v) > 0), tri(icross(v, A_) > 0)));
+    return 2;
+  }
+  /// ≤ pointArcDist: the distance to the circle is ≤ the distance to either end.
+  I pointArc(const IPoint& P) const {
+    const IPoint v = isub(P, C_);
+    if (inRange(v) != 0) return CGAL::abs(inorm(v) - rho_);
+    return imin(inorm(isub(P, F_)), inorm(isub(P, Tp_)));
+  }
+  IPoint C_, F_, T_, A_, B_, Tp_;
+  I rho2_, rho_;
+  bool full_;
+};
+
 class Checker {
 public:
   Checker(const Workspace& w, const Rational& r) : w_(w), r_(r), r2_(r * r), rd_(r.get_d()), index_(w) {
@@ -60,6 +159,7 @@ public:
 
   std::size_t exactTests = 0;
   void skipInsideTest() { insideChecked_ = true; }
+  void setFiltered(bool on) { filtered_ = on; }
 
   /// Returns an empty string when clear, else what is wrong.
   std::string segment(const Point& a, const Point& b) {
@@ -71,10 +171,13 @@ public:
     const double m = rd_ + 1e-7 * scale_;
     std::string bad;
     KS s(kp(a), kp(b));
+    const IPoint A = ip(a), B = ip(b);
+    const I R = iv(r_);
     index_.query(std::min(ax, bx) - m, std::min(ay, by) - m, std::max(ax, bx) + m, std::max(ay, by) + m,
                  [&](const detail::IndexedEdge& e) {
                    if (!bad.empty()) return;
                    if (detail::segSegDist(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m) return;
+                   if (filtered_ && CGAL::certainly(lbSegSeg(A, B, ip(*e.a), ip(*e.b)) >= R)) return;
                    ++exactTests;
                    KS es(kp(*e.a), kp(*e.b));
                    const mpq_class d2 = (a == b) ? CGAL::squared_distance(kp(a), es) : CGAL::squared_distance(s, es);
@@ -118,6 +221,8 @@ public:
     const double cx = c.x.get_d(), cy = c.y.get_d(), rr = std::sqrt(rho2.get_d());
     const double m = rd_ + 1e-7 * scale_;
     const Expr R = ex(r_);
+    const ArcFilter filter(f, t, c, rho2, ccw);
+    const I RI = iv(r_);
     std::string bad;
     auto pointArcDist = [&](const ExprPoint& P) -> Expr {
       ExprPoint v = sub(P, C);
@@ -130,6 +235,7 @@ public:
       const double dc = detail::pointSegDist(cx, cy, e.ax, e.ay, e.bx, e.by);
       const double far = std::max(std::hypot(e.ax - cx, e.ay - cy), std::hypot(e.bx - cx, e.by - cy));
       if (dc > rr + m || far < rr - m) return;
+      if (filtered_ && CGAL::certainly(filter.lowerBound(*e.a, *e.b) >= RI)) return;
       ++exactTests;
       const ExprPoint P = ep(*e.a), Q = ep(*e.b);
       // intersection of the segment with the circle inside the arc's range
@@ -171,6 +277,7 @@ private:
   double rd_, scale_ = 1;
   detail::EdgeIndex index_;
   bool insideChecked_ = false;
+  bool filtered_ = true;
 };
 
 std::string fmt(PointD p) {
@@ -189,9 +296,13 @@ bool segmentClear(const Workspace& w, const Rational& r, const Point& a, const P
 
 struct ClearanceChecker::Impl {
   Checker checker;
-  Impl(const Workspace& w, const Rational& r) : checker(w, r) { checker.skipInsideTest(); }
+  Impl(const Workspace& w, const Rational& r, bool filtered) : checker(w, r) {
+    checker.skipInsideTest();
+    checker.setFiltered(filtered);
+  }
 };
-ClearanceChecker::ClearanceChecker(const Workspace& w, const Rational& r) : impl_(std::make_unique<Impl>(w, r)) {}
+ClearanceChecker::ClearanceChecker(const Workspace& w, const Rational& r, bool filtered)
+    : impl_(std::make_unique<Impl>(w, r, filtered)) {}
 ClearanceChecker::~ClearanceChecker() = default;
 bool ClearanceChecker::clear(const Point& a, const Point& b) { return impl_->checker.segment(a, b).empty(); }
 bool ClearanceChecker::clearArc(const Point& from, const Point& to, const Point& center, bool ccw) {

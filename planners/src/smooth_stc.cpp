@@ -334,9 +334,12 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
     for (const Opening& o : open) requests.push_back(requestOf(ctx.cells, walk, o));
     sweeps = state.cspace->sweeps(requests);
   }
+  const auto tc = Clock::now();
+  plan.timings.emplace_back("contours", std::chrono::duration<double>(tc - t).count());
   ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
   insertSweeps(ctx, walk, open, sweeps, check, path, plan);
   if (params.text("corners") == "fill") fillCorners(ctx, check, path, plan);
+  plan.timings.emplace_back("checks", std::chrono::duration<double>(Clock::now() - tc).count());
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());
 }
 

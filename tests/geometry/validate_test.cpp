@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace coverkit;
 
@@ -99,4 +100,52 @@ TEST(Validator, SegmentClearPredicate) {
   const Problem p = corridor();
   EXPECT_TRUE(segmentClear(p.workspace, Rational(1, 2), {Rational(1), Rational(1, 2)}, {Rational(9), Rational(1, 2)}));
   EXPECT_FALSE(segmentClear(p.workspace, Rational(1, 2), {Rational(1), Rational(1, 2)}, {Rational(9), Rational(2, 5)}));
+}
+
+// The interval filter in front of the exact tests must never change a verdict. Pieces are placed
+// at r·(1 + e) from obstacle edges and vertices whose coordinates are not doubles, with e down to
+// 1e-15 (where doubles cannot decide), and every verdict is compared with the unfiltered checker.
+TEST(Validator, IntervalFilterNeverChangesAVerdict) {
+  Workspace w;
+  Region reg;
+  reg.outer = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  reg.holes.push_back({{Rational(10, 3), Rational(22, 7)}, {Rational(20, 3), Rational(37, 9)}, {Rational(21, 5), Rational(78, 11)}});
+  // a square turned by atan(3/4): rational vertices
+  reg.holes.push_back({{Rational(7), Rational(1)}, {Rational(39, 5), Rational(8, 5)}, {Rational(36, 5), Rational(12, 5)}, {Rational(32, 5), Rational(9, 5)}});
+  w.regions.push_back(reg);
+  const Rational r(3, 10);
+  ClearanceChecker fast(w, r), exact(w, r, false);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double eps[] = {-1e-3, -1e-13, -1e-15, 0, 1e-15, 1e-13, 1e-3};
+  auto P = [](double x, double y) { return Point{exactFromDouble(x), exactFromDouble(y)}; };
+  int clear = 0, blocked = 0;
+  for (const auto& hole : reg.holes) {
+    const std::size_t n = hole.size();
+    for (int trial = 0; trial < 140; ++trial) {
+      const std::size_t i = rng() % n;
+      const double ax = hole[i].x.get_d(), ay = hole[i].y.get_d(), bx = hole[(i + 1) % n].x.get_d(),
+                   by = hole[(i + 1) % n].y.get_d();
+      const double e = eps[rng() % 7], rho = 0.3 * (1 + e);
+      bool a = false, b = false;
+      if (trial % 2 == 0) {  // a segment beside edge i, parallel or slanted
+        const double len = std::hypot(bx - ax, by - ay), nx = (by - ay) / len, ny = -(bx - ax) / len;  // outward for cw holes
+        const double t = u(rng), s = u(rng) * 0.8, tilt = (rng() % 2) ? 0 : (u(rng) - 0.5) * 1e-9;
+        const double x0 = ax + t * (bx - ax) + rho * nx, y0 = ay + t * (by - ay) + rho * ny;
+        const double x1 = x0 + s * (bx - ax) / len + tilt * nx, y1 = y0 + s * (by - ay) / len + tilt * ny;
+        a = fast.clear(P(x0, y0), P(x1, y1));
+        b = exact.clear(P(x0, y0), P(x1, y1));
+      } else {  // an arc about vertex i
+        const double a0 = u(rng) * 2 * M_PI, a1 = a0 + (u(rng) - 0.5) * 2 * M_PI;
+        const Point f = P(ax + rho * std::cos(a0), ay + rho * std::sin(a0)), to = P(ax + rho * std::cos(a1), ay + rho * std::sin(a1));
+        const bool ccw = rng() % 2;
+        a = fast.clearArc(f, to, P(ax, ay), ccw);
+        b = exact.clearArc(f, to, P(ax, ay), ccw);
+      }
+      ASSERT_EQ(a, b) << "trial " << trial << " e = " << e;
+      (a ? clear : blocked) += 1;
+    }
+  }
+  EXPECT_GT(clear, 20);
+  EXPECT_GT(blocked, 20);
 }

@@ -49,9 +49,12 @@ bool segmentClear(const Workspace& w, const Rational& r, const Point& a, const P
 
 /// segmentClear for many segments of one workspace and radius: the edge index is built once.
 /// `clear` does not test that a lies in W (planners that call it know it does); the rest is exact.
+/// Edges near the piece are first bounded with interval arithmetic and only the undecided ones are
+/// computed exactly (`filtered`); `filtered = false` decides every nearby edge exactly, which gives
+/// the same answers, slower (the tests compare the two).
 class ClearanceChecker {
 public:
-  ClearanceChecker(const Workspace& w, const Rational& r);
+  ClearanceChecker(const Workspace& w, const Rational& r, bool filtered = true);
   ~ClearanceChecker();
   ClearanceChecker(const ClearanceChecker&) = delete;
   ClearanceChecker& operator=(const ClearanceChecker&) = delete;
