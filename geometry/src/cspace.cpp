@@ -489,6 +489,15 @@ CSpace::Sweep sweepOne(const PolygonSet& S, const CSpace::SweepRequest& q) {
                       : (CGAL::compare(cv.source().x(), L) == CGAL::EQUAL && CGAL::compare(cv.target().x(), L) == CGAL::EQUAL);
   };
   auto along = [&](const detail::Traits::Point_2& p) -> const CoordNT& { return horizontal ? p.x() : p.y(); };
+  // the side of U opposite the base: the right of a → d is −y going +x, +x going +y
+  const K::FT farLine = ft(horizontal ? Rational(q.a.y + (sign > 0 ? Rational(-q.depth) : q.depth))
+                                      : Rational(q.a.x + (sign > 0 ? q.depth : Rational(-q.depth))));
+  auto onFar = [&](const XCurve& cv) {
+    if (cv.is_circular()) return false;
+    const CoordNT L(farLine);
+    return horizontal ? (CGAL::compare(cv.source().y(), L) == CGAL::EQUAL && CGAL::compare(cv.target().y(), L) == CGAL::EQUAL)
+                      : (CGAL::compare(cv.source().x(), L) == CGAL::EQUAL && CGAL::compare(cv.target().x(), L) == CGAL::EQUAL);
+  };
   // the entry: among the targets of base curves (the boundary runs along the base from d towards
   // a), the one nearest a
   std::vector<std::vector<XCurve>> loops;
@@ -515,6 +524,7 @@ CSpace::Sweep sweepOne(const PolygonSet& S, const CSpace::SweepRequest& q) {
   out.reached = true;
   std::vector<XCurve> run;
   for (std::size_t k = (bestCurve + 1) % n; k != first; k = (k + 1) % n) {
+    out.farSide = out.farSide || onFar(cs[k]);
     if (!run.empty() && !sameSupport(run.back(), cs[k])) appendMerged(out.pieces, run);
     run.push_back(cs[k]);
   }

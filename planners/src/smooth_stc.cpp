@@ -29,14 +29,17 @@
 //    the paper's single input edge). Measured in docs/smooth-stc.md: the extra entries raise mean
 //    coverage of the coverable region and cost little length, since most partial mega-cells have
 //    one free neighbour.
-//  - Exactness: the sweep runs on the C-space of radius r + δ (δ = 2^-36 × the map's extent, a
-//    power of two), so that rounding its exact points (square roots where lanes meet arcs) to
-//    doubles moves them ~2^-52 × extent, far less than δ; every inserted piece is then checked
+//  - Exactness: the sweep runs on the C-space of radius r + ε + δ. ε (a power of two just above
+//    the C-space's approximation bound, 1e-6 × the map's extent) keeps the sweep outside the
+//    conservative C-obstacles of radius r as well, whose irrational edges are replaced by pieces up
+//    to ε outside (so the path also lies in the library's own C-free, which the tests check);
+//    δ = 2^-36 × extent (a power of two) is more than rounding the sweep's exact points (square
+//    roots where lanes meet arcs) to doubles can move them (~2^-52 × extent); every inserted piece is then checked
 //    exactly against the true radius r (ClearanceChecker, as the validator reads lines and arcs),
 //    and a sweep with a failing piece is left out and counted (`sweeps_rejected`), never kept.
 //  - Online (Algorithm 2): the Spiral-STC robot (sensor of the four neighbouring mega-cells); when
 //    its walk reaches a side facing a mega-cell that is not free, it builds the C-space there (the
-//    sweep depends only on obstacles within r + δ of U: x, y and their border) and sweeps it. With
+//    sweep depends only on obstacles within r + ε + δ of U: x, y and their border) and sweeps it. With
 //    the paper's dfs_ccw rule the path equals the offline one (tested).
 #include <coverkit/planners/smooth_stc.h>
 
@@ -45,12 +48,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <array>
 #include <map>
+#include <set>
 
 namespace coverkit::planners {
 
 struct SmoothStcState {
-  std::unique_ptr<CSpace> cspace;   ///< radius r + δ
+  std::unique_ptr<CSpace> cspace;   ///< radius r + ε + δ
   double seconds = 0;
 };
 
@@ -62,16 +67,20 @@ std::vector<ParamSpec> entryParam() {
   return {{"entries", ParamType::kChoice, "every", "every|parent",
            "which free neighbours enter a partially occupied mega-cell: every one the tour passes (complete), or only "
            "the first, its tree parent (the paper's single input edge)"},
+          {"reach", ParamType::kChoice, "run", "run|cell",
+           "how far a sweep goes: through the whole run of partially occupied mega-cells straight beyond the free one "
+           "(run), or into the neighbouring mega-cell only (cell, the paper's leaf)"},
           {"corners", ParamType::kChoice, "fill", "fill|keep",
            "at a right-angle turn whose outer corner nothing else sweeps: run on to the sub-cell's edge and cut back "
            "diagonally (fill), or turn at the centre as STC does (keep)"}};
 }
 
-/// δ: a power of two, 2^-36 of the workspace's extent.
+/// ε + δ: ε a power of two at least the C-space's approximation bound (1e-6 of the extent, see
+/// CSpace), δ a power of two, 2^-36 of the extent.
 Rational slackOf(const Workspace& w) {
   const Box b = w.bbox();
-  const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
-  return exactFromDouble(std::ldexp(1.0, std::ilogb(std::max(extent, 1e-9)) - 36));
+  const double extent = std::max(std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d()), 1e-9);
+  return exactFromDouble(std::ldexp(1.0, std::ilogb(1e-6 * extent) + 1)) + exactFromDouble(std::ldexp(1.0, std::ilogb(extent) - 36));
 }
 
 void buildCSpace(const PlanningContext& ctx, SmoothStcState& state) {
@@ -86,11 +95,30 @@ struct Opening {
   std::size_t move;   ///< walk[move] → walk[move + 1]
   int dir;            ///< direction of the move (graph::Dir)
   int leafCol, leafRow;
+  int run = 1;        ///< mega-cells the sweep reaches: the leaf and the partial ones straight beyond it
 };
 
-std::vector<Opening> openings(const CellGrid& cells, const std::vector<CellIndex>& walk, bool everyEntry) {
+/// The mega-cells straight beyond (col, row) in direction `d`, (col, row) included, that the tour
+/// does not cover: partially occupied ones, and free ones outside the tree (cut off from it by
+/// partially occupied mega-cells).
+int partialRun(const CellGrid& cells, const std::vector<std::uint8_t>& inTree, int col, int row, int d) {
+  int n = 0;
+  auto outside = [&](int c, int r) {
+    const CellState st = cells.mega(c, r);
+    return st == CellState::kPartial || (st == CellState::kFree && !inTree[static_cast<std::size_t>(r) * cells.megaCols() + c]);
+  };
+  while (cells.insideMega(col, row) && outside(col, row)) {
+    ++n;
+    col += graph::kDx[d];
+    row += graph::kDy[d];
+  }
+  return std::max(n, 1);
+}
+
+std::vector<Opening> openings(const CellGrid& cells, const std::vector<CellIndex>& walk, bool everyEntry, bool throughRuns) {
   std::vector<Opening> out;
-  std::vector<std::uint8_t> entered(cells.megaCount(), 0);
+  std::vector<std::uint8_t> entered(cells.megaCount(), 0), inTree(cells.megaCount(), 0);
+  for (const CellIndex& c : walk) inTree[static_cast<std::size_t>(c.row / 2) * cells.megaCols() + c.col / 2] = 1;
   for (std::size_t i = 0; i + 1 < walk.size(); ++i) {
     const CellIndex a = walk[i], b = walk[i + 1];
     if (a.col / 2 != b.col / 2 || a.row / 2 != b.row / 2) continue;
@@ -107,7 +135,7 @@ std::vector<Opening> openings(const CellGrid& cells, const std::vector<CellIndex
     std::uint8_t& e = entered[static_cast<std::size_t>(lr) * cells.megaCols() + lc];
     if (!everyEntry && e) continue;
     e = 1;
-    out.push_back({i, dir, lc, lr});
+    out.push_back({i, dir, lc, lr, throughRuns ? partialRun(cells, inTree, lc, lr, right) : 1});
   }
   return out;
 }
@@ -124,6 +152,15 @@ void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk
   std::size_t inserted = 0, rejected = 0, unreached = 0, missed = 0, arcs = 0;
   std::vector<std::uint8_t> swept(ctx.cells.megaCount(), 0);
   const double tol = 1e-9 * std::max(1.0, ctx.cells.subSizeD() * std::max(ctx.cells.megaCols(), ctx.cells.megaRows()));
+  // a run swept end to end from one side (the sweep went along U's far side) is not swept again
+  // from the free mega-cell at its other end: (axis, column or row, first, last mega-cell)
+  std::set<std::array<int, 4>> runsDone;
+  std::size_t shared = 0;
+  auto runKey = [](const Opening& o) {
+    const int right = (o.dir + 3) & 3, vertical = graph::kDx[right] == 0;
+    const int at = vertical ? o.leafRow : o.leafCol, end = at + (o.run - 1) * (vertical ? graph::kDy[right] : graph::kDx[right]);
+    return std::array<int, 4>{vertical, vertical ? o.leafCol : o.leafRow, std::min(at, end), std::max(at, end)};
+  };
   for (std::size_t j = 0; j < open.size(); ++j) {
     const CSpace::Sweep& s = sweeps[j];
     if (!s.reached || s.pieces.empty()) {
@@ -131,6 +168,10 @@ void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk
       continue;
     }
     const Opening& o = open[j];
+    if (o.run > 1 && runsDone.count(runKey(o))) {
+      ++shared;
+      continue;
+    }
     const bool horizontal = o.dir == 0 || o.dir == 2;
     const double sign = (o.dir == 0 || o.dir == 1) ? 1 : -1;
     const PointD A = ctx.cells.subCenterD(walk[o.move].col, walk[o.move].row);
@@ -178,7 +219,12 @@ void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk
       out.push_back(p);
     }
     ++inserted;
-    swept[static_cast<std::size_t>(o.leafRow) * ctx.cells.megaCols() + o.leafCol] = 1;
+    if (o.run > 1 && s.farSide) runsDone.insert(runKey(o));
+    const int right = (o.dir + 3) & 3;
+    for (int c = 0; c < o.run; ++c) {
+      const int col = o.leafCol + c * graph::kDx[right], row = o.leafRow + c * graph::kDy[right];
+      if (ctx.cells.mega(col, row) == CellState::kPartial) swept[static_cast<std::size_t>(row) * ctx.cells.megaCols() + col] = 1;
+    }
     // the rest of the segment stays to be copied (or split again)
     path.segments[at].from = pw;
     k = at;
@@ -190,6 +236,7 @@ void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk
   for (auto v : swept) leaves += v;
   plan.statistics["sweeps"] = static_cast<double>(inserted);
   plan.statistics["sweeps_unreached"] = static_cast<double>(unreached);
+  plan.statistics["sweeps_shared"] = static_cast<double>(shared);
   plan.statistics["sweeps_rejected"] = static_cast<double>(rejected + missed);
   plan.statistics["partial_mega_cells_swept"] = static_cast<double>(leaves);
   plan.statistics["arcs"] = static_cast<double>(arcs);
@@ -313,9 +360,84 @@ void fillCorners(const PlanningContext& ctx, ClearanceChecker& check, Path& path
   plan.statistics["corners_left"] = static_cast<double>(blocked);
 }
 
+/// Unit heading of a piece at its start or end.
+PointD headingOf(const PathSegment& p, bool atEnd) {
+  double x, y;
+  if (p.kind == PathSegment::Kind::kLine) {
+    x = p.to.x - p.from.x, y = p.to.y - p.from.y;
+  } else {
+    const PointD q = atEnd ? p.to : p.from;
+    x = -(q.y - p.center.y), y = q.x - p.center.x;
+    if (!p.ccw) x = -x, y = -y;
+  }
+  const double n = std::hypot(x, y);
+  return n > 0 ? PointD{x / n, y / n} : PointD{0, 0};
+}
+
+/// The point at arc length `l` from the start of a piece (0 ≤ l ≤ length).
+PointD pointAlong(const PathSegment& p, double l) {
+  const double len = p.length();
+  if (len <= 0) return p.from;
+  if (p.kind == PathSegment::Kind::kLine) {
+    const double t = std::min(1.0, std::max(0.0, l / len));
+    return {p.from.x + t * (p.to.x - p.from.x), p.from.y + t * (p.to.y - p.from.y)};
+  }
+  const double rho = std::hypot(p.from.x - p.center.x, p.from.y - p.center.y);
+  const double a = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x) + (p.ccw ? 1 : -1) * l / rho;
+  return {p.center.x + rho * std::cos(a), p.center.y + rho * std::sin(a)};
+}
+
+/// Cuts the tips of thin fingers. Where U ∩ C-free narrows to a point (an obstacle edge almost
+/// parallel to a lane, or a contour that touches the lane), its boundary runs in along one side and
+/// back along the other, turning by 180° at the tip: a reversing spike. The tip is cut where the two
+/// sides are w = r/16 apart (found by stepping back s = w, 2w, … ≤ 4r along both), with a straight
+/// cut across; the cut and the two shortened pieces are checked exactly, else the tip stays
+/// (`tips_left`). The robot at the cut still sweeps r beyond it, so little of the finger is lost.
+void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
+  const double r = ctx.problem.robots.at(0).radius.get_d(), w = r / 16, tiny = 1e-9 * r;
+  auto exact = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
+  auto clear = [&](const PathSegment& p) {
+    return p.kind == PathSegment::Kind::kLine ? check.clear(exact(p.from), exact(p.to))
+                                              : check.clearArc(exact(p.from), exact(p.to), exact(p.center), p.ccw);
+  };
+  std::vector<PathSegment>& seg = path.segments;
+  std::size_t cut = 0, left = 0;
+  for (std::size_t j = 0; j + 1 < seg.size(); ++j) {
+    if (seg[j].length() < tiny || seg[j + 1].length() < tiny) continue;
+    const PointD u = headingOf(seg[j], true), v = headingOf(seg[j + 1], false);
+    if (u.x * v.x + u.y * v.y > std::cos(175.0 * M_PI / 180)) continue;
+    bool done = false;
+    for (double s = w; s <= 4 * r && !done; s *= 2) {
+      // back from the tip along seg[j], seg[j-1], …; forward along seg[j+1], …
+      std::ptrdiff_t k = static_cast<std::ptrdiff_t>(j);
+      double back = s;
+      while (k >= 0 && seg[static_cast<std::size_t>(k)].length() <= back) back -= seg[static_cast<std::size_t>(k--)].length();
+      std::size_t m = j + 1;
+      double fwd = s;
+      while (m < seg.size() && seg[m].length() <= fwd) fwd -= seg[m++].length();
+      if (k < 0 || m >= seg.size()) break;
+      const PathSegment& pk = seg[static_cast<std::size_t>(k)];
+      const PointD A = pointAlong(pk, pk.length() - back), B = pointAlong(seg[m], fwd);
+      if (std::hypot(A.x - B.x, A.y - B.y) < w) continue;
+      PathSegment before = pk, after = seg[m];
+      before.to = A;
+      after.from = B;
+      const PathSegment across = PathSegment::line(A, B);
+      if (!clear(before) || !clear(across) || !clear(after)) continue;
+      seg.erase(seg.begin() + k, seg.begin() + static_cast<std::ptrdiff_t>(m) + 1);
+      seg.insert(seg.begin() + k, {before, across, after});
+      j = static_cast<std::size_t>(k) + 1;  // go on after the cut
+      done = true;
+    }
+    (done ? cut : left) += 1;
+  }
+  plan.statistics["tips_cut"] = static_cast<double>(cut);
+  plan.statistics["tips_left"] = static_cast<double>(left);
+}
+
 CSpace::SweepRequest requestOf(const CellGrid& cells, const std::vector<CellIndex>& walk, const Opening& o) {
   const CellIndex a = walk[o.move], d = walk[o.move + 1];
-  return {cells.subCenter(a.col, a.row), cells.subCenter(d.col, d.row), Rational(2 * cells.subSize())};
+  return {cells.subCenter(a.col, a.row), cells.subCenter(d.col, d.row), Rational(2 * o.run * cells.subSize())};
 }
 
 void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path, Plan& plan,
@@ -323,7 +445,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   const auto t = Clock::now();
   if (!state.cspace) buildCSpace(ctx, state);
   plan.timings.emplace_back("cspace", state.seconds);
-  const std::vector<Opening> open = openings(ctx.cells, walk, params.text("entries") == "every");
+  const std::vector<Opening> open = openings(ctx.cells, walk, params.text("entries") == "every", params.text("reach") == "run");
   std::vector<CSpace::Sweep> sweeps;
   if (online) {
     // one mega-cell at a time, in the order the robot reaches them (Algorithm 2, step 2.4.1)
@@ -338,6 +460,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   plan.timings.emplace_back("contours", std::chrono::duration<double>(tc - t).count());
   ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
   insertSweeps(ctx, walk, open, sweeps, check, path, plan);
+  cutTips(ctx, check, path, plan);
   if (params.text("corners") == "fill") fillCorners(ctx, check, path, plan);
   plan.timings.emplace_back("checks", std::chrono::duration<double>(Clock::now() - tc).count());
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());

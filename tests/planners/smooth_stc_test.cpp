@@ -92,7 +92,10 @@ TEST(SmoothStc, SweepsPartialMegaCellsExactlyAndCoversMoreThanStcAndFullStc) {
     const CSpace cs(ctx.problem.workspace, ctx.problem.robots[0].radius);
     ValidationOptions vo;
     vo.cspace = &cs;
-    EXPECT_TRUE(validatePaths(ctx.problem, smooth.paths, vo).valid) << "seed " << seed;
+    const ValidationReport inCSpace = validatePaths(ctx.problem, smooth.paths, vo);
+    EXPECT_TRUE(inCSpace.valid) << "seed " << seed << ": "
+                                << (inCSpace.violations.empty() ? "" : inCSpace.violations[0].detail + " at piece " +
+                                                                           std::to_string(inCSpace.violations[0].segment));
     EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, smooth)) << "seed " << seed;
     EXPECT_TRUE(noReversingSpike(smooth, 0.5)) << "seed " << seed;
     EXPECT_GT(smooth.statistics.at("sweeps"), 0) << "seed " << seed;
@@ -122,7 +125,7 @@ TEST(SmoothStc, EveryEntrySweepsAtLeastWhatTheParentsEntryDoes) {
     const Plan parent = planners::runPlanner("smooth_stc", ctx, {{"entries", "parent"}});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, parent));
     EXPECT_GE(every.statistics.at("sweeps"), parent.statistics.at("sweeps"));
-    EXPECT_EQ(every.statistics.at("partial_mega_cells_swept"), parent.statistics.at("partial_mega_cells_swept"));
+    EXPECT_GE(every.statistics.at("partial_mega_cells_swept"), parent.statistics.at("partial_mega_cells_swept"));
     EXPECT_GE(coverable(ctx, every) + 1e-3, coverable(ctx, parent)) << "seed " << seed;
   }
 }

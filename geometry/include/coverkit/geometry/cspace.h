@@ -118,6 +118,7 @@ public:
     std::vector<PathSegment> pieces;   ///< from entry to exit, in doubles (arcs merged per circle)
     PointD entry, exit;                ///< on the base (doubles of exact points)
     double entryT = 0, exitT = 0;      ///< their places on the base, 0 at a, 1 at d
+    bool farSide = false;              ///< the sweep runs along U's side opposite the base
   };
   /// All requests at once: C-free is clipped recursively to boxes around groups of requests, so the
   /// cost follows the requests and the curves near them, not requests × all curves.
