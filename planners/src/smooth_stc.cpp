@@ -46,9 +46,12 @@
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/validate.h>
 
+#include "walk_path.h"
+
 #include <chrono>
 #include <cmath>
 #include <array>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -70,6 +73,9 @@ std::vector<ParamSpec> entryParam() {
           {"reach", ParamType::kChoice, "run", "run|cell",
            "how far a sweep goes: through the whole run of partially occupied mega-cells straight beyond the free one "
            "(run), or into the neighbouring mega-cell only (cell, the paper's leaf)"},
+          {"pockets", ParamType::kChoice, "join", "join|leave",
+           "free mega-cells cut off from the tree by partially occupied ones, beyond a run swept end to end: toured with "
+           "their own tree from the sweep (join), or left to the sweeps (leave)"},
           {"corners", ParamType::kChoice, "fill", "fill|keep",
            "at a right-angle turn whose outer corner nothing else sweeps: run on to the sub-cell's edge and cut back "
            "diagonally (fill), or turn at the centre as STC does (keep)"}};
@@ -98,149 +104,260 @@ struct Opening {
   int run = 1;        ///< mega-cells the sweep reaches: the leaf and the partial ones straight beyond it
 };
 
-/// The mega-cells straight beyond (col, row) in direction `d`, (col, row) included, that the tour
-/// does not cover: partially occupied ones, and free ones outside the tree (cut off from it by
-/// partially occupied mega-cells).
-int partialRun(const CellGrid& cells, const std::vector<std::uint8_t>& inTree, int col, int row, int d) {
-  int n = 0;
-  auto outside = [&](int c, int r) {
-    const CellState st = cells.mega(c, r);
-    return st == CellState::kPartial || (st == CellState::kFree && !inTree[static_cast<std::size_t>(r) * cells.megaCols() + c]);
-  };
-  while (cells.insideMega(col, row) && outside(col, row)) {
-    ++n;
-    col += graph::kDx[d];
-    row += graph::kDy[d];
-  }
-  return std::max(n, 1);
+CSpace::SweepRequest requestOf(const CellGrid& cells, const std::vector<CellIndex>& walk, const Opening& o) {
+  const CellIndex a = walk[o.move], d = walk[o.move + 1];
+  return {cells.subCenter(a.col, a.row), cells.subCenter(d.col, d.row), Rational(2 * o.run * cells.subSize())};
 }
 
-std::vector<Opening> openings(const CellGrid& cells, const std::vector<CellIndex>& walk, bool everyEntry, bool throughRuns) {
-  std::vector<Opening> out;
-  std::vector<std::uint8_t> entered(cells.megaCount(), 0), inTree(cells.megaCount(), 0);
-  for (const CellIndex& c : walk) inTree[static_cast<std::size_t>(c.row / 2) * cells.megaCols() + c.col / 2] = 1;
-  for (std::size_t i = 0; i + 1 < walk.size(); ++i) {
-    const CellIndex a = walk[i], b = walk[i + 1];
-    if (a.col / 2 != b.col / 2 || a.row / 2 != b.row / 2) continue;
-    int dir = -1;
-    for (int d = 0; d < 4; ++d)
-      if (b.col - a.col == graph::kDx[d] && b.row - a.row == graph::kDy[d]) dir = d;
-    if (dir < 0) continue;
-    const int right = (dir + 3) & 3;
-    // both cells on the mega-cell's side that faces `right`
-    const int na = (a.col + graph::kDx[right]) / 2, ma = (a.row + graph::kDy[right]) / 2;
-    if (a.col + graph::kDx[right] < 0 || a.row + graph::kDy[right] < 0 || (na == a.col / 2 && ma == a.row / 2)) continue;
-    const int lc = a.col / 2 + graph::kDx[right], lr = a.row / 2 + graph::kDy[right];
-    if (!cells.insideMega(lc, lr) || cells.mega(lc, lr) == CellState::kFree) continue;
-    std::uint8_t& e = entered[static_cast<std::size_t>(lr) * cells.megaCols() + lc];
-    if (!everyEntry && e) continue;
-    e = 1;
-    out.push_back({i, dir, lc, lr, throughRuns ? partialRun(cells, inTree, lc, lr, right) : 1});
-  }
-  return out;
-}
+/// The tour of a pocket's tree from a sub-cell (closed), or empty.
+using PocketWalk = std::function<std::vector<CellIndex>(CellIndex start)>;
 
-/// Inserts the sweeps into the placed path. Each opening's move is part of one axis-parallel
-/// segment of the path (runs are merged, or cut near obstacles); the sweep replaces the part of it
-/// between its entry and exit.
-void insertSweeps(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const std::vector<Opening>& open,
-                  const std::vector<CSpace::Sweep>& sweeps, ClearanceChecker& check, Path& path, Plan& plan) {
-  auto exact = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
-  std::vector<PathSegment> out;
-  out.reserve(path.segments.size());
-  std::size_t k = 0;  // next segment of `path` not yet copied
-  std::size_t inserted = 0, rejected = 0, unreached = 0, missed = 0, arcs = 0;
-  std::vector<std::uint8_t> swept(ctx.cells.megaCount(), 0);
-  const double tol = 1e-9 * std::max(1.0, ctx.cells.subSizeD() * std::max(ctx.cells.megaCols(), ctx.cells.megaRows()));
-  // a run swept end to end from one side (the sweep went along U's far side) is not swept again
-  // from the free mega-cell at its other end: (axis, column or row, first, last mega-cell)
-  std::set<std::array<int, 4>> runsDone;
-  std::size_t shared = 0;
-  auto runKey = [](const Opening& o) {
+/// Puts the sweeps into the tour's path, and the tours of the pockets they reach into the sweeps.
+/// One per plan: the mega-cells in some tour, the runs swept end to end and the counts are shared
+/// by the main tour and the pockets' tours.
+class Refiner {
+public:
+  Refiner(const PlanningContext& ctx, const ParamSet& params, SmoothStcState& state, bool online, ClearanceChecker& check,
+          PocketWalk pocketWalk)
+      : ctx_(ctx), cells_(ctx.cells), state_(state), online_(online), every_(params.text("entries") == "every"),
+        throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"), check_(check),
+        pocketWalk_(std::move(pocketWalk)), inTree_(cells_.megaCount(), 0), swept_(cells_.megaCount(), 0) {}
+
+  /// The sweeps of `walk`'s openings (and the pockets behind them) inserted into its placed `path`.
+  void tour(const std::vector<CellIndex>& walk, Path& path) {
+    for (const CellIndex& c : walk) inTree_[megaIndex(c.col / 2, c.row / 2)] = 1;
+    const std::vector<Opening> open = openings(walk);
+    insert(walk, open, contours(walk, open), path);
+  }
+
+  void report(Plan& plan) const {
+    std::size_t leaves = 0;
+    for (auto v : swept_) leaves += v;
+    plan.statistics["sweeps"] = static_cast<double>(inserted_);
+    plan.statistics["sweeps_unreached"] = static_cast<double>(unreached_);
+    plan.statistics["sweeps_shared"] = static_cast<double>(shared_);
+    plan.statistics["sweeps_rejected"] = static_cast<double>(rejected_);
+    plan.statistics["partial_mega_cells_swept"] = static_cast<double>(leaves);
+    plan.statistics["arcs"] = static_cast<double>(arcs_);
+    plan.statistics["pockets_joined"] = static_cast<double>(pocketsJoined_);
+    plan.statistics["pockets_left"] = static_cast<double>(pocketsLeft_);
+  }
+
+private:
+  std::size_t megaIndex(int col, int row) const { return static_cast<std::size_t>(row) * cells_.megaCols() + col; }
+  static Point exact(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
+
+  /// The mega-cells straight beyond (col, row) in direction `d`, (col, row) included, that no tour
+  /// covers: partially occupied ones; with pockets left, also free ones outside every tree (cut
+  /// off from the tree by partially occupied mega-cells), which a joined pocket's tour covers.
+  int runFrom(int col, int row, int d) const {
+    int n = 0;
+    while (cells_.insideMega(col, row) &&
+           (cells_.mega(col, row) == CellState::kPartial ||
+            (!pockets_ && cells_.mega(col, row) == CellState::kFree && !inTree_[megaIndex(col, row)]))) {
+      ++n;
+      col += graph::kDx[d];
+      row += graph::kDy[d];
+    }
+    return std::max(n, 1);
+  }
+
+  std::vector<Opening> openings(const std::vector<CellIndex>& walk) const {
+    std::vector<Opening> out;
+    std::vector<std::uint8_t> entered(cells_.megaCount(), 0);
+    for (std::size_t i = 0; i + 1 < walk.size(); ++i) {
+      const CellIndex a = walk[i], b = walk[i + 1];
+      if (a.col / 2 != b.col / 2 || a.row / 2 != b.row / 2) continue;
+      int dir = -1;
+      for (int d = 0; d < 4; ++d)
+        if (b.col - a.col == graph::kDx[d] && b.row - a.row == graph::kDy[d]) dir = d;
+      if (dir < 0) continue;
+      const int right = (dir + 3) & 3;
+      // both cells on the mega-cell's side that faces `right`
+      const int na = (a.col + graph::kDx[right]) / 2, ma = (a.row + graph::kDy[right]) / 2;
+      if (a.col + graph::kDx[right] < 0 || a.row + graph::kDy[right] < 0 || (na == a.col / 2 && ma == a.row / 2)) continue;
+      const int lc = a.col / 2 + graph::kDx[right], lr = a.row / 2 + graph::kDy[right];
+      if (!cells_.insideMega(lc, lr) || cells_.mega(lc, lr) == CellState::kFree) continue;
+      std::uint8_t& e = entered[megaIndex(lc, lr)];
+      if (!every_ && e) continue;
+      e = 1;
+      out.push_back({i, dir, lc, lr, throughRuns_ ? runFrom(lc, lr, right) : 1});
+    }
+    return out;
+  }
+
+  std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open) const {
+    std::vector<CSpace::Sweep> sweeps;
+    if (online_) {
+      // one mega-cell at a time, in the order the robot reaches them (Algorithm 2, step 2.4.1)
+      for (const Opening& o : open) sweeps.push_back(state_.cspace->sweeps({requestOf(cells_, walk, o)}).front());
+      return sweeps;
+    }
+    std::vector<CSpace::SweepRequest> requests;
+    requests.reserve(open.size());
+    for (const Opening& o : open) requests.push_back(requestOf(cells_, walk, o));
+    return state_.cspace->sweeps(requests);
+  }
+
+  static std::array<int, 4> runKey(const Opening& o) {
     const int right = (o.dir + 3) & 3, vertical = graph::kDx[right] == 0;
     const int at = vertical ? o.leafRow : o.leafCol, end = at + (o.run - 1) * (vertical ? graph::kDy[right] : graph::kDx[right]);
-    return std::array<int, 4>{vertical, vertical ? o.leafCol : o.leafRow, std::min(at, end), std::max(at, end)};
-  };
-  for (std::size_t j = 0; j < open.size(); ++j) {
-    const CSpace::Sweep& s = sweeps[j];
-    if (!s.reached || s.pieces.empty()) {
-      ++unreached;
-      continue;
+    return {vertical, vertical ? o.leafCol : o.leafRow, std::min(at, end), std::max(at, end)};
+  }
+
+  bool clear(const PathSegment& p) {
+    return p.kind == PathSegment::Kind::kLine ? check_.clear(exact(p.from), exact(p.to))
+                                              : check_.clearArc(exact(p.from), exact(p.to), exact(p.center), p.ccw);
+  }
+
+  /// Each opening's move is part of one axis-parallel segment of the path (runs are merged, or cut
+  /// near obstacles); the sweep replaces the part of it between its entry and exit.
+  void insert(const std::vector<CellIndex>& walk, const std::vector<Opening>& open, const std::vector<CSpace::Sweep>& sweeps,
+              Path& path) {
+    std::vector<PathSegment> out;
+    out.reserve(path.segments.size());
+    std::size_t k = 0;  // next segment of `path` not yet copied
+    const double tol = 1e-9 * std::max(1.0, cells_.subSizeD() * std::max(cells_.megaCols(), cells_.megaRows()));
+    for (std::size_t j = 0; j < open.size(); ++j) {
+      const CSpace::Sweep& s = sweeps[j];
+      const Opening& o = open[j];
+      if (!s.reached || s.pieces.empty()) {
+        ++unreached_;
+        continue;
+      }
+      // a run swept end to end from one side (along U's far side) is not swept again from its other end
+      if (o.run > 1 && runsDone_.count(runKey(o))) {
+        ++shared_;
+        continue;
+      }
+      const bool horizontal = o.dir == 0 || o.dir == 2;
+      const double sign = (o.dir == 0 || o.dir == 1) ? 1 : -1;
+      const PointD A = cells_.subCenterD(walk[o.move].col, walk[o.move].row);
+      auto alongOf = [&](PointD p) { return sign * (horizontal ? p.x : p.y); };
+      auto fixedOf = [&](PointD p) { return horizontal ? p.y : p.x; };
+      // the segment (current remainder first) holding the move
+      std::size_t at = k;
+      for (; at < path.segments.size(); ++at) {
+        const PathSegment& seg = path.segments[at];
+        const bool axis = seg.kind == PathSegment::Kind::kLine && (horizontal ? seg.from.y == seg.to.y : seg.from.x == seg.to.x);
+        if (axis && std::abs(fixedOf(seg.from) - fixedOf(A)) <= tol && alongOf(seg.to) > alongOf(seg.from) &&
+            alongOf(s.entry) >= alongOf(seg.from) - tol && alongOf(s.exit) <= alongOf(seg.to) + tol)
+          break;
+      }
+      if (at == path.segments.size()) {
+        ++rejected_;
+        continue;
+      }
+      // copy the segments before, then split this one (its start may be the exit of an earlier sweep)
+      for (; k < at; ++k) out.push_back(path.segments[k]);
+      const PathSegment cur = path.segments[at];
+      auto onSeg = [&](PointD p) {
+        const double c = sign * std::min(std::max(alongOf(p), alongOf(cur.from)), alongOf(cur.to));
+        return horizontal ? PointD{c, cur.from.y} : PointD{cur.from.x, c};
+      };
+      const PointD pe = onSeg(s.entry), pw = onSeg(s.exit);
+      std::vector<PathSegment> pieces = s.pieces;
+      pieces.front().from = pe;
+      pieces.back().to = pw;
+      bool ok = alongOf(pe) <= alongOf(pw);
+      for (std::size_t i = 0; ok && i < pieces.size(); ++i) ok = clear(pieces[i]);
+      if (!ok) {
+        ++rejected_;
+        continue;
+      }
+      if (o.run > 1 && s.farSide) runsDone_.insert(runKey(o));
+      const int right = (o.dir + 3) & 3;
+      for (int c = 0; c < o.run; ++c) {
+        const int col = o.leafCol + c * graph::kDx[right], row = o.leafRow + c * graph::kDy[right];
+        if (cells_.mega(col, row) == CellState::kPartial) swept_[megaIndex(col, row)] = 1;
+      }
+      if (pockets_ && s.farSide) joinPocket(walk, o, pieces);
+      if (!(pe.x == cur.from.x && pe.y == cur.from.y)) out.push_back(PathSegment::line(cur.from, pe));
+      for (const PathSegment& p : pieces) {
+        arcs_ += p.kind == PathSegment::Kind::kArc;
+        out.push_back(p);
+      }
+      ++inserted_;
+      // the rest of the segment stays to be copied (or split again)
+      path.segments[at].from = pw;
+      k = at;
+      if (pw.x == cur.to.x && pw.y == cur.to.y) ++k;
     }
-    const Opening& o = open[j];
-    if (o.run > 1 && runsDone.count(runKey(o))) {
-      ++shared;
-      continue;
+    for (; k < path.segments.size(); ++k) out.push_back(path.segments[k]);
+    path.segments.swap(out);
+  }
+
+  /// A pocket: free mega-cells that no tour covers, beyond a run swept end to end. Its own tree is
+  /// toured from the sub-cell on the sweep's right lane round to the one on its left lane (as if the
+  /// run were a tree edge), and that tour replaces the sweep's pieces along U's far side: up the
+  /// right lane into the pocket, round it, down the left lane. The two joining lines are checked
+  /// exactly; when one fails, or the pocket's walk cannot be placed, the pocket stays out.
+  void joinPocket(const std::vector<CellIndex>& walk, const Opening& o, std::vector<PathSegment>& pieces) {
+    const int right = (o.dir + 3) & 3, dx = graph::kDx[right], dy = graph::kDy[right];
+    const int zc = o.leafCol + o.run * dx, zr = o.leafRow + o.run * dy;
+    if (!cells_.insideMega(zc, zr) || cells_.mega(zc, zr) != CellState::kFree || inTree_[megaIndex(zc, zr)]) return;
+    const CellIndex a = walk[o.move], d = walk[o.move + 1];
+    // the pocket's sub-cells next to the run, on the lanes of a and d
+    const CellIndex zR = dx == 0 ? CellIndex{a.col, 2 * zr + (dy < 0)} : CellIndex{2 * zc + (dx < 0), a.row};
+    const CellIndex zL = dx == 0 ? CellIndex{d.col, zR.row} : CellIndex{zR.col, d.row};
+    std::vector<CellIndex> pw = pocketWalk_(zR);
+    if (pw.size() < 3 || !(pw.front() == zR) || !(pw.back() == zR) || !(pw[pw.size() - 2] == zL)) {
+      ++pocketsLeft_;
+      return;
     }
-    const bool horizontal = o.dir == 0 || o.dir == 2;
-    const double sign = (o.dir == 0 || o.dir == 1) ? 1 : -1;
-    const PointD A = ctx.cells.subCenterD(walk[o.move].col, walk[o.move].row);
-    auto alongOf = [&](PointD p) { return sign * (horizontal ? p.x : p.y); };
-    auto fixedOf = [&](PointD p) { return horizontal ? p.y : p.x; };
-    // the segment (current remainder first) holding the move
-    std::size_t at = k;
-    for (; at < path.segments.size(); ++at) {
-      const PathSegment& seg = path.segments[at];
-      const bool axis = seg.kind == PathSegment::Kind::kLine && (horizontal ? seg.from.y == seg.to.y : seg.from.x == seg.to.x);
-      if (axis && std::abs(fixedOf(seg.from) - fixedOf(A)) <= tol && alongOf(seg.to) > alongOf(seg.from) &&
-          alongOf(s.entry) >= alongOf(seg.from) - tol && alongOf(s.exit) <= alongOf(seg.to) + tol)
-        break;
-    }
-    if (at == path.segments.size()) {
-      ++missed;
-      continue;
-    }
-    // copy the segments before, then split this one (its start may be the exit of an earlier sweep)
-    for (; k < at; ++k) out.push_back(path.segments[k]);
-    const PathSegment cur = path.segments[at];
-    auto onSeg = [&](PointD p) {
-      double v = alongOf(p);
-      v = std::min(std::max(v, alongOf(cur.from)), alongOf(cur.to));
-      const double c = v * sign;
-      return horizontal ? PointD{c, cur.from.y} : PointD{cur.from.x, c};
+    pw.pop_back();
+    // the far side of U, in doubles, and the pieces along it
+    const PointD ad = cells_.subCenterD(a.col, a.row);
+    const double farAt = (dx == 0 ? ad.y : ad.x) + (dx + dy) * 2.0 * o.run * cells_.subSizeD();
+    const double tol = 1e-9 * std::max(1.0, std::abs(farAt));
+    auto onFar = [&](const PathSegment& p) {
+      return p.kind == PathSegment::Kind::kLine && std::abs((dx == 0 ? p.from.y : p.from.x) - farAt) <= tol &&
+             std::abs((dx == 0 ? p.to.y : p.to.x) - farAt) <= tol;
     };
-    const PointD pe = onSeg(s.entry), pw = onSeg(s.exit);
-    std::vector<PathSegment> pieces = s.pieces;
-    pieces.front().from = pe;
-    pieces.back().to = pw;
-    bool ok = alongOf(pe) <= alongOf(pw);
-    for (const PathSegment& p : pieces) {
-      if (!ok) break;
-      if (p.kind == PathSegment::Kind::kLine) ok = check.clear(exact(p.from), exact(p.to));
-      else ok = check.clearArc(exact(p.from), exact(p.to), exact(p.center), p.ccw);
+    std::size_t f1 = pieces.size(), f2 = 0;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (onFar(pieces[i])) f1 = std::min(f1, i), f2 = i;
+    if (f1 == pieces.size()) {
+      ++pocketsLeft_;
+      return;
+    }
+    std::vector<std::size_t> marked;
+    for (const CellIndex& c : pw)
+      if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
+    PlacedWalk placed = placeWalk(ctx_, pw, cells_.subCenter(zR.col, zR.row), false);
+    const PointD F1 = pieces[f1].from, F2 = pieces[f2].to;
+    bool ok = placed.unsafeCells.empty() && placed.startClear && !placed.path.segments.empty();
+    PathSegment up, down;
+    if (ok) {
+      up = PathSegment::line(F1, placed.path.segments.front().from);
+      down = PathSegment::line(placed.path.segments.back().to, F2);
+      ok = clear(up) && clear(down);
     }
     if (!ok) {
-      ++rejected;
-      continue;
+      for (std::size_t m : marked) inTree_[m] = 0;
+      ++pocketsLeft_;
+      return;
     }
-    if (!(pe.x == cur.from.x && pe.y == cur.from.y)) out.push_back(PathSegment::line(cur.from, pe));
-    for (const PathSegment& p : pieces) {
-      arcs += p.kind == PathSegment::Kind::kArc;
-      out.push_back(p);
-    }
-    ++inserted;
-    if (o.run > 1 && s.farSide) runsDone.insert(runKey(o));
-    const int right = (o.dir + 3) & 3;
-    for (int c = 0; c < o.run; ++c) {
-      const int col = o.leafCol + c * graph::kDx[right], row = o.leafRow + c * graph::kDy[right];
-      if (ctx.cells.mega(col, row) == CellState::kPartial) swept[static_cast<std::size_t>(row) * ctx.cells.megaCols() + col] = 1;
-    }
-    // the rest of the segment stays to be copied (or split again)
-    path.segments[at].from = pw;
-    k = at;
-    if (pw.x == cur.to.x && pw.y == cur.to.y) ++k;
+    tour(pw, placed.path);  // the pocket's own sweeps (and pockets)
+    std::vector<PathSegment> joined(pieces.begin(), pieces.begin() + static_cast<std::ptrdiff_t>(f1));
+    joined.push_back(up);
+    joined.insert(joined.end(), placed.path.segments.begin(), placed.path.segments.end());
+    joined.push_back(down);
+    joined.insert(joined.end(), pieces.begin() + static_cast<std::ptrdiff_t>(f2) + 1, pieces.end());
+    pieces.swap(joined);
+    ++pocketsJoined_;
   }
-  for (; k < path.segments.size(); ++k) out.push_back(path.segments[k]);
-  path.segments.swap(out);
-  std::size_t leaves = 0;
-  for (auto v : swept) leaves += v;
-  plan.statistics["sweeps"] = static_cast<double>(inserted);
-  plan.statistics["sweeps_unreached"] = static_cast<double>(unreached);
-  plan.statistics["sweeps_shared"] = static_cast<double>(shared);
-  plan.statistics["sweeps_rejected"] = static_cast<double>(rejected + missed);
-  plan.statistics["partial_mega_cells_swept"] = static_cast<double>(leaves);
-  plan.statistics["arcs"] = static_cast<double>(arcs);
-}
+
+  const PlanningContext& ctx_;
+  const CellGrid& cells_;
+  SmoothStcState& state_;
+  bool online_, every_, throughRuns_, pockets_;
+  ClearanceChecker& check_;
+  PocketWalk pocketWalk_;
+  std::vector<std::uint8_t> inTree_, swept_;
+  std::set<std::array<int, 4>> runsDone_;
+  std::size_t inserted_ = 0, rejected_ = 0, unreached_ = 0, shared_ = 0, arcs_ = 0, pocketsJoined_ = 0, pocketsLeft_ = 0;
+};
 
 /// Segments by bucket (side 2r), for "does anything pass within r of this point" in doubles.
 class SegmentBuckets {
@@ -435,34 +552,17 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
   plan.statistics["tips_left"] = static_cast<double>(left);
 }
 
-CSpace::SweepRequest requestOf(const CellGrid& cells, const std::vector<CellIndex>& walk, const Opening& o) {
-  const CellIndex a = walk[o.move], d = walk[o.move + 1];
-  return {cells.subCenter(a.col, a.row), cells.subCenter(d.col, d.row), Rational(2 * o.run * cells.subSize())};
-}
-
 void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path, Plan& plan,
-            SmoothStcState& state, bool online) {
+            SmoothStcState& state, bool online, PocketWalk pocketWalk) {
   const auto t = Clock::now();
   if (!state.cspace) buildCSpace(ctx, state);
   plan.timings.emplace_back("cspace", state.seconds);
-  const std::vector<Opening> open = openings(ctx.cells, walk, params.text("entries") == "every", params.text("reach") == "run");
-  std::vector<CSpace::Sweep> sweeps;
-  if (online) {
-    // one mega-cell at a time, in the order the robot reaches them (Algorithm 2, step 2.4.1)
-    for (const Opening& o : open) sweeps.push_back(state.cspace->sweeps({requestOf(ctx.cells, walk, o)}).front());
-  } else {
-    std::vector<CSpace::SweepRequest> requests;
-    requests.reserve(open.size());
-    for (const Opening& o : open) requests.push_back(requestOf(ctx.cells, walk, o));
-    sweeps = state.cspace->sweeps(requests);
-  }
-  const auto tc = Clock::now();
-  plan.timings.emplace_back("contours", std::chrono::duration<double>(tc - t).count());
   ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
-  insertSweeps(ctx, walk, open, sweeps, check, path, plan);
+  Refiner refiner(ctx, params, state, online, check, std::move(pocketWalk));
+  refiner.tour(walk, path);
+  refiner.report(plan);
   cutTips(ctx, check, path, plan);
   if (params.text("corners") == "fill") fillCorners(ctx, check, path, plan);
-  plan.timings.emplace_back("checks", std::chrono::duration<double>(Clock::now() - tc).count());
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());
 }
 
@@ -496,7 +596,14 @@ void SmoothStcPlanner::prepare(const PlanningContext& ctx, const ParamSet&, Plan
 
 void SmoothStcPlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                                   Plan& plan) const {
-  refine(ctx, walk, params, path, plan, *state_, false);
+  const graph::GridGraph g = buildGraph(ctx);
+  refine(ctx, walk, params, path, plan, *state_, false, [&](CellIndex s) {
+    const int root = startNode(ctx, g, s);
+    if (root < 0) return std::vector<CellIndex>{};
+    graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
+    Plan scratch;
+    return circumnavigate(ctx, g, tree, s, params, scratch);
+  });
 }
 
 std::string SmoothStcPlanner::coverageClaim() const { return kClaim; }
@@ -525,7 +632,14 @@ void SmoothStcOnlinePlanner::prepare(const PlanningContext& ctx, const ParamSet&
 
 void SmoothStcOnlinePlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params,
                                         Path& path, Plan& plan) const {
-  refine(ctx, walk, params, path, plan, *state_, true);
+  const graph::GridGraph g = buildGraph(ctx);
+  refine(ctx, walk, params, path, plan, *state_, true, [&](CellIndex s) {
+    const int root = startNode(ctx, g, s);
+    if (root < 0) return std::vector<CellIndex>{};
+    graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
+    Plan scratch;
+    return circumnavigate(ctx, g, tree, s, params, scratch);
+  });
 }
 
 std::string SmoothStcOnlinePlanner::coverageClaim() const { return kClaim; }
