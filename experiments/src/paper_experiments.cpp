@@ -303,6 +303,34 @@ T configValue(const YAML::Node& node, const std::string& file, const std::string
 }
 
 
+/// A planner as a config names it: `name` or `name:key=value;key=value` (parameters), e.g.
+/// `smooth_stc:corners=keep`. The whole text is its label in the CSV and the chart.
+struct PlannerSpec {
+  std::string name;
+  std::map<std::string, std::string> params;
+};
+
+PlannerSpec parsePlannerSpec(const std::string& text, const std::string& configFile) {
+  PlannerSpec p;
+  const auto colon = text.find(':');
+  p.name = text.substr(0, colon);
+  if (!planners::Registry::instance().contains(p.name)) throw InputError(configFile, "planners", "unknown planner '" + p.name + "'");
+  if (colon == std::string::npos) return p;
+  std::stringstream rest(text.substr(colon + 1));
+  std::string kv;
+  while (std::getline(rest, kv, ';')) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError(configFile, "planners", "'" + text + "': parameters are key=value, separated by ';'");
+    p.params[kv.substr(0, eq)] = kv.substr(eq + 1);
+  }
+  return p;
+}
+
+RunResult runSpec(const planners::PlanningContext& ctx, const std::string& label, const std::string& configFile, const MetricOptions& mo) {
+  const PlannerSpec spec = parsePlannerSpec(label, configFile);
+  return runOnce(ctx, spec.name, spec.params, 0, {}, mo);
+}
+
 /// What every experiment config shares: the planners and the seeded polygon worlds.
 struct ExperimentConfig {
   YAML::Node root;
@@ -322,8 +350,15 @@ ExperimentConfig loadExperimentConfig(const std::string& configFile, int default
     throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
   }
   c.planners = configValue<std::vector<std::string>>(c.root, configFile, "planners", {"stc", "full_stc"});
-  for (const auto& p : c.planners)
-    if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
+  for (const auto& p : c.planners) {
+    const PlannerSpec spec = parsePlannerSpec(p, configFile);
+    if (p.find(',') != std::string::npos) throw InputError(configFile, "planners", "'" + p + "': no commas in a planner's label");
+    try {  // the parameters are checked before anything runs
+      planners::ParamSet(planners::Registry::instance().create(spec.name)->params(), spec.params, spec.name);
+    } catch (const InputError& e) {
+      throw InputError(configFile, "planners", "'" + p + "': " + e.what());
+    }
+  }
   const YAML::Node wn = c.root["worlds"];
   c.count = configValue<int>(wn, configFile, "count", defaultCount);
   c.worlds.width = configValue<int>(wn, configFile, "width", 20);
@@ -403,7 +438,7 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
       MetricOptions mo = defaultMetricOptions();
       mo.cspace = &cspace;
       for (const std::string& p : plannerNames) {
-        const RunResult res = runOnce(ctx, p, {}, 0, {}, mo);
+        const RunResult res = runSpec(ctx, p, configFile, mo);
         Acc& a = acc[p][si];
         const Metrics& m = res.metrics;
         csv << seed << ',' << values[si] << ',' << p << ',' << formatDouble(r.get_d()) << ',' << toString(res.plan.status) << ','
@@ -522,7 +557,7 @@ std::string runCoverageVsTime(const std::string& configFile, const std::string& 
     std::map<std::string, RunResult> runs;
     double horizon = 0;
     for (const std::string& p : plannerNames) {
-      runs[p] = runOnce(ctx, p, {}, 0, {}, mo);
+      runs[p] = runSpec(ctx, p, configFile, mo);
       invalid += !runs[p].validation.valid;
       horizon = std::max(horizon, runs[p].metrics.length / speed);
       meanTotalTime[p] += runs[p].metrics.length / speed / count;
