@@ -3,6 +3,9 @@
 one line per benchmark family, with the least-squares slope of log(time) on log(size).
 
 usage: plot_loglog.py BENCH.json OUT.svg [--counter subcells|nodes] [--filter REGEX] [--title T]
+                      [--seconds c1,c2,...]
+With --seconds, each named counter (seconds, e.g. smooth_s,stc_s of BM_SmoothStcVsStc) is a line of
+its own instead of the benchmark's real time.
 """
 import argparse, json, math, re, sys
 from collections import OrderedDict
@@ -13,6 +16,7 @@ def main():
     ap.add_argument("--counter", default="subcells")
     ap.add_argument("--filter", default=".")
     ap.add_argument("--title", default="time against size")
+    ap.add_argument("--seconds", default="")
     a = ap.parse_args()
     data = json.load(open(a.bench))
     series = OrderedDict()
@@ -22,7 +26,12 @@ def main():
         parts = b["name"].split("/")
         key = parts[0] + ("/" + "/".join(parts[2:]) if len(parts) > 2 else "")
         unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b.get("time_unit", "ns")]
-        series.setdefault(key, []).append((b[a.counter], b["real_time"] * unit))
+        if a.seconds:
+            for c in a.seconds.split(","):
+                if c in b:
+                    series.setdefault(c, []).append((b[a.counter], b[c] * 1e3))
+        else:
+            series.setdefault(key, []).append((b[a.counter], b["real_time"] * unit))
     if not series:
         sys.exit("no matching benchmarks")
     xs = [x for s in series.values() for x, _ in s]; ys = [y for s in series.values() for _, y in s]

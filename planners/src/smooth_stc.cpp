@@ -23,12 +23,18 @@
 //    where the boundary comes back to x's row (CSpace::sweeps). Where nothing blocks U this is
 //    STC's path around y; where an obstacle does, it is the C-space contour (segments and exact
 //    arcs), with C-free on the left, as the paper draws it.
-//  - Completeness (our addition; the paper claims "almost 100%"): an obstacle can split y so that
-//    the part beyond it is not reached from the input edge. So y is entered from every free
-//    neighbour whose side the tour walks along (`entries=every`, the default; `entries=parent` is
-//    the paper's single input edge). Measured in docs/smooth-stc.md: the extra entries raise mean
-//    coverage of the coverable region and cost little length, since most partial mega-cells have
-//    one free neighbour.
+//  - Completeness (our additions; the paper claims "almost 100%", we measure and need it; each has
+//    a parameter whose other value is the paper's rule, docs/smooth-stc.md has the figures):
+//    * entries=every: an obstacle can split y so that the part beyond it is not reached from the
+//      input edge, so y is entered from every free neighbour whose side the tour walks along;
+//    * reach=run: obstacles larger than a mega-cell leave partial mega-cells that border no free
+//      one, so U goes on straight through the whole run of partial mega-cells beyond y. U is 2r
+//      wide: every point of the part of U ∩ C-free its boundary bounds lies within r of it. A run
+//      crossed end to end from one side is not swept again from the other;
+//    * pockets=join: free mega-cells cut off from the tree by partial ones are toured with their
+//      own tree, entered from a sweep that crossed the run to them, as if the run were a tree edge;
+//    * tips are cut: where U ∩ C-free narrows to a point its boundary reverses (a spike); it is cut
+//      straight across where the two sides are r/16 apart.
 //  - Exactness: the sweep runs on the C-space of radius r + ε + δ. ε (a power of two just above
 //    the C-space's approximation bound, 1e-6 × the map's extent) keeps the sweep outside the
 //    conservative C-obstacles of radius r as well, whose irrational edges are replaced by pieces up
@@ -39,8 +45,10 @@
 //    and a sweep with a failing piece is left out and counted (`sweeps_rejected`), never kept.
 //  - Online (Algorithm 2): the Spiral-STC robot (sensor of the four neighbouring mega-cells); when
 //    its walk reaches a side facing a mega-cell that is not free, it builds the C-space there (the
-//    sweep depends only on obstacles within r + ε + δ of U: x, y and their border) and sweeps it. With
-//    the paper's dfs_ccw rule the path equals the offline one (tested).
+//    sweep depends only on obstacles within r + ε + δ of U: x, y and their border) and sweeps it.
+//    Along a run the robot follows the contour from one mega-cell to the next and senses each as it
+//    reaches it; a pocket's tree is grown by the same online rule once the robot is in it. With the
+//    paper's dfs_ccw rule the path equals the offline one (tested).
 #include <coverkit/planners/smooth_stc.h>
 
 #include <coverkit/geometry/cspace.h>

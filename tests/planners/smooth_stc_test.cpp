@@ -162,3 +162,38 @@ TEST(SmoothStc, NonDoubleCentresStayExactlySafe) {
     EXPECT_TRUE(noReversingSpike(smooth, 0.3)) << "seed " << seed;
   }
 }
+
+// A fenced room: thin walls, not on the grid, with a 1.2 m gap in the middle of each side, around
+// 4 × 4 free mega-cells that only partially occupied ones border. STC stays outside; Smooth-STC
+// joins the room as a pocket through a gap and tours it with its own tree.
+TEST(SmoothStc, JoinsAPocketThatPartialMegaCellsCutOff) {
+  Workspace w;
+  Region reg;
+  reg.outer = {{0, 0}, {12, 0}, {12, 12}, {0, 12}};
+  auto box = [](Rational x0, Rational y0, Rational x1, Rational y1) { return Ring{{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}}; };
+  const Rational lo(31, 10), hi(34, 10), lo2(86, 10), hi2(89, 10), a(35, 10), b(54, 10), c(66, 10), d(85, 10);
+  for (const auto& [p, q] : {std::pair{a, b}, std::pair{c, d}}) {
+    reg.holes.push_back(box(p, lo, q, hi));     // bottom
+    reg.holes.push_back(box(p, lo2, q, hi2));   // top
+    reg.holes.push_back(box(lo, p, hi, q));     // left
+    reg.holes.push_back(box(lo2, p, hi2, q));   // right
+  }
+  w.regions.push_back(reg);
+  const auto ctx = testing_helpers::contextFor(w, Rational(1, 4), Point{Rational(1, 4), Rational(1, 4)});
+  const Plan joined = planners::runPlanner("smooth_stc", ctx, {});
+  const Plan left = planners::runPlanner("smooth_stc", ctx, {{"pockets", "leave"}});
+  const Plan paper = planners::runPlanner("smooth_stc", ctx, {{"pockets", "leave"}, {"reach", "cell"}, {"entries", "parent"}});
+  const Plan online = planners::runPlanner("smooth_stc_online", ctx, {});
+  for (const Plan* p : {&joined, &left, &paper, &online}) ASSERT_TRUE(testing_helpers::planIsValid(ctx, *p));
+  EXPECT_GE(joined.statistics.at("pockets_joined"), 1);
+  EXPECT_EQ(left.statistics.at("pockets_joined"), 0);
+  EXPECT_GE(online.statistics.at("pockets_joined"), 1);
+  EXPECT_TRUE(noReversingSpike(joined, 0.5));
+  const double cStc = coverable(ctx, planners::runPlanner("stc", ctx, {})), cJoined = coverable(ctx, joined),
+               cLeft = coverable(ctx, left), cPaper = coverable(ctx, paper);
+  EXPECT_LT(cStc, 0.9);          // the room is 16 of 144 m²
+  EXPECT_GT(cJoined, 0.98);
+  EXPECT_GT(cJoined, cLeft);     // sweeps through the room reach less than its own tour
+  EXPECT_GT(cLeft, cPaper);
+  EXPECT_NEAR(coverable(ctx, online), cJoined, 2e-3);
+}

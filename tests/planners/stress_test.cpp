@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 #include <random>
+#include <sstream>
 
 using namespace coverkit;
 
@@ -112,7 +113,7 @@ TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
 
 // COVERKIT_STRESS_MAPS=DIR (a folder of map files, searched recursively): every planner on cells on each map
 // with several radii, validated and checked for coverage. Skipped when unset (the suite ships no
-// third-party maps).
+// third-party maps). COVERKIT_STRESS_PLANNERS=a,b,… limits it to those planners.
 TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
   const char* dir = std::getenv("COVERKIT_STRESS_MAPS");
   if (!dir) GTEST_SKIP() << "COVERKIT_STRESS_MAPS not set";
@@ -122,6 +123,11 @@ TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
     if (ext == ".yaml" || ext == ".map" || ext == ".wkt" || ext == ".geojson") files.push_back(e.path().string());
   }
   std::sort(files.begin(), files.end());
+  std::vector<std::string> only;
+  if (const char* env = std::getenv("COVERKIT_STRESS_PLANNERS")) {
+    std::stringstream in(env);
+    for (std::string name; std::getline(in, name, ',');) only.push_back(name);
+  }
   std::size_t plans = 0;
   for (const std::string& f : files) {
     const Workspace w = datasets::loadMap(f);
@@ -129,7 +135,8 @@ TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
     const double extent = std::min(toDouble(Rational(b.xmax - b.xmin)), toDouble(Rational(b.ymax - b.ymin)));
     for (const double frac : {0.003, 0.006, 0.01, 0.025}) {
       // radii scaled to the map: 0.3 % to 2.5 % of its shorter side (at least 0.05), as 3-digit decimals
-      const double rd = std::max(0.05, frac * extent);
+      // (maps in lon/lat or other small units: at least 1 % of the side instead of 0.05)
+      const double rd = std::max(std::min(0.05, 0.01 * extent), frac * extent);
       const double scale = std::pow(10.0, 2 - std::floor(std::log10(rd)));
       const Rational r = parseRational(formatDouble(std::round(rd * scale) / scale), "r", "r");
       planners::PlanningContext ctx;
@@ -139,12 +146,16 @@ TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
         continue;
       }
       for (const std::string& name : planners::Registry::instance().names()) {
+        if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
         SCOPED_TRACE(f + " r " + r.get_str() + " " + name);
         const auto caps = planners::Registry::instance().create(name)->capabilities();
         const Plan a = planners::runPlanner(name, ctx, {});
         if (a.status == PlanStatus::kInvalidStart || a.status == PlanStatus::kNoFreeSpace) continue;
         ++plans;
         EXPECT_TRUE(testing_helpers::planIsValid(ctx, a));
+        if (!only.empty())
+          std::cout << f << " r " << r.get_str() << " " << name << ": " << toString(a.status) << ", " << a.paths[0].segments.size()
+                    << " pieces\n";
         if (caps.coverage == "free_sub_cells") {
           EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
         } else {
