@@ -576,7 +576,8 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
 
 const char* kClaim =
     "covered every sub-cell of the start's component of free mega-cells and swept the C-space contour of the partially "
-    "occupied mega-cells beside it";
+    "occupied mega-cells beside it and of the runs of them beyond, touring the free mega-cells those cut off where a sweep "
+    "reached them";
 
 }  // namespace
 
@@ -585,7 +586,8 @@ SmoothStcPlanner::~SmoothStcPlanner() = default;
 
 std::string SmoothStcPlanner::description() const {
   return "Smooth-STC (Pham, Moore & Truong 2019), offline: STC over the free mega-cells; each partially occupied "
-         "mega-cell beside the tree is swept along the exact C-space contour (segments and arcs)";
+         "mega-cell beside the tree, and the run of them beyond, is swept along the exact C-space contour (segments and "
+         "arcs); free mega-cells cut off by them are toured with their own trees";
 }
 
 std::vector<ParamSpec> SmoothStcPlanner::params() const {
@@ -605,13 +607,7 @@ void SmoothStcPlanner::prepare(const PlanningContext& ctx, const ParamSet&, Plan
 void SmoothStcPlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                                   Plan& plan) const {
   const graph::GridGraph g = buildGraph(ctx);
-  refine(ctx, walk, params, path, plan, *state_, false, [&](CellIndex s) {
-    const int root = startNode(ctx, g, s);
-    if (root < 0) return std::vector<CellIndex>{};
-    graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
-    Plan scratch;
-    return circumnavigate(ctx, g, tree, s, params, scratch);
-  });
+  refine(ctx, walk, params, path, plan, *state_, false, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
 }
 
 std::string SmoothStcPlanner::coverageClaim() const { return kClaim; }
@@ -641,13 +637,7 @@ void SmoothStcOnlinePlanner::prepare(const PlanningContext& ctx, const ParamSet&
 void SmoothStcOnlinePlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params,
                                         Path& path, Plan& plan) const {
   const graph::GridGraph g = buildGraph(ctx);
-  refine(ctx, walk, params, path, plan, *state_, true, [&](CellIndex s) {
-    const int root = startNode(ctx, g, s);
-    if (root < 0) return std::vector<CellIndex>{};
-    graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
-    Plan scratch;
-    return circumnavigate(ctx, g, tree, s, params, scratch);
-  });
+  refine(ctx, walk, params, path, plan, *state_, true, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
 }
 
 std::string SmoothStcOnlinePlanner::coverageClaim() const { return kClaim; }

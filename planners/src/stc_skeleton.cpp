@@ -164,6 +164,15 @@ StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const Par
   return unsafe.empty() ? Outcome::kDone : Outcome::kUnsafe;
 }
 
+std::vector<CellIndex> StcSkeleton::tourFrom(const PlanningContext& ctx, const graph::GridGraph& g, CellIndex s,
+                                             const ParamSet& params) const {
+  const int root = startNode(ctx, g, s);
+  if (root < 0) return {};
+  graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
+  Plan scratch;  // the walk's statistics belong to the caller's own plan, not to this tour
+  return circumnavigate(ctx, g, tree, s, params, scratch);
+}
+
 std::string SpiralStcPlanner::description() const {
   return "Spiral-STC (Gabriely & Rimon 2001), online: senses the four neighbours of its mega-cell, grows the tree "
          "counter-clockwise as it goes, covers every sub-cell of the reachable free mega-cells";

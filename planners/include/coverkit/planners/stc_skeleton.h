@@ -40,6 +40,9 @@ protected:
   /// inserts its sweeps of partially occupied mega-cells. `walk` is the sub-cell walk placed.
   virtual void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                           Plan& plan) const;
+  /// The closed walk (hook 3) around the tree (hook 2) grown in `g` from sub-cell s's node; empty
+  /// when s has none. Smooth-STC tours the pockets it joins with it.
+  std::vector<CellIndex> tourFrom(const PlanningContext& context, const graph::GridGraph& g, CellIndex s, const ParamSet& params) const;
   /// The graph node the start sub-cell belongs to, or -1 (default: its mega-cell, when active).
   virtual int startNode(const PlanningContext& context, const graph::GridGraph& g, CellIndex start) const;
   /// The cells a start must lie in (for the invalid_start message).
