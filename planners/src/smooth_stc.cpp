@@ -117,6 +117,14 @@ CSpace::SweepRequest requestOf(const CellGrid& cells, const std::vector<CellInde
   return {cells.subCenter(a.col, a.row), cells.subCenter(d.col, d.row), Rational(2 * o.run * cells.subSize())};
 }
 
+Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
+
+/// A line or arc of the path, read exactly as the validator reads it, keeps the disc clear.
+bool pieceClear(ClearanceChecker& check, const PathSegment& p) {
+  return p.kind == PathSegment::Kind::kLine ? check.clear(exactOf(p.from), exactOf(p.to))
+                                            : check.clearArc(exactOf(p.from), exactOf(p.to), exactOf(p.center), p.ccw);
+}
+
 /// The tour of a pocket's tree from a sub-cell (closed), or empty.
 using PocketWalk = std::function<std::vector<CellIndex>(CellIndex start)>;
 
@@ -153,7 +161,6 @@ public:
 
 private:
   std::size_t megaIndex(int col, int row) const { return static_cast<std::size_t>(row) * cells_.megaCols() + col; }
-  static Point exact(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
   /// The mega-cells straight beyond (col, row) in direction `d`, (col, row) included, that no tour
   /// covers: partially occupied ones; with pockets left, also free ones outside every tree (cut
@@ -213,10 +220,7 @@ private:
     return {vertical, vertical ? o.leafCol : o.leafRow, std::min(at, end), std::max(at, end)};
   }
 
-  bool clear(const PathSegment& p) {
-    return p.kind == PathSegment::Kind::kLine ? check_.clear(exact(p.from), exact(p.to))
-                                              : check_.clearArc(exact(p.from), exact(p.to), exact(p.center), p.ccw);
-  }
+  bool clear(const PathSegment& p) { return pieceClear(check_, p); }
 
   /// Each opening's move is part of one axis-parallel segment of the path (runs are merged, or cut
   /// near obstacles); the sweep replaces the part of it between its entry and exit.
@@ -428,7 +432,6 @@ private:
 void fillCorners(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
   const double r = ctx.problem.robots.at(0).radius.get_d();
   const SegmentBuckets buckets(path, r);
-  auto exact = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
   auto axisDir = [](const PathSegment& s, double& ux, double& uy, double& len) {
     if (s.kind != PathSegment::Kind::kLine) return false;
     const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y;
@@ -465,12 +468,12 @@ void fillCorners(const PlanningContext& ctx, ClearanceChecker& check, Path& path
     }
     const PointD ahead{P.x + r * ux, P.y + r * uy}, up{P.x + r * vx, P.y + r * vy};
     const PointD back{P.x - r * ux, P.y - r * uy}, below{P.x - r * vx, P.y - r * vy};
-    if (check.clear(exact(P), exact(ahead)) && check.clear(exact(ahead), exact(up))) {
+    if (pieceClear(check, PathSegment::line(P, ahead)) && pieceClear(check, PathSegment::line(ahead, up))) {
       prev.to = ahead;
       out.push_back(PathSegment::line(ahead, up));
       next.from = up;
       ++filled;
-    } else if (check.clear(exact(back), exact(below)) && check.clear(exact(below), exact(P))) {
+    } else if (pieceClear(check, PathSegment::line(back, below)) && pieceClear(check, PathSegment::line(below, P))) {
       prev.to = back;
       out.push_back(PathSegment::line(back, below));
       next.from = below;
@@ -520,11 +523,7 @@ PointD pointAlong(const PathSegment& p, double l) {
 /// (`tips_left`). The robot at the cut still sweeps r beyond it, so little of the finger is lost.
 void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
   const double r = ctx.problem.robots.at(0).radius.get_d(), w = r / 16, tiny = 1e-9 * r;
-  auto exact = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
-  auto clear = [&](const PathSegment& p) {
-    return p.kind == PathSegment::Kind::kLine ? check.clear(exact(p.from), exact(p.to))
-                                              : check.clearArc(exact(p.from), exact(p.to), exact(p.center), p.ccw);
-  };
+  auto clear = [&](const PathSegment& p) { return pieceClear(check, p); };
   std::vector<PathSegment>& seg = path.segments;
   std::size_t cut = 0, left = 0;
   for (std::size_t j = 0; j + 1 < seg.size(); ++j) {
