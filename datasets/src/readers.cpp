@@ -344,6 +344,10 @@ Workspace loadMap(const std::string& path, const MapOptions& options) {
   throw InputError(path, "", "unknown map format '" + ext + "' (expected .yaml, .map, .wkt, .geojson, .grid)");
 }
 
+namespace {
+OccupancyGrid readRosGridChecked(const std::string& yamlPath, const MapOptions& options);
+}  // namespace
+
 void checkGridSize(const std::string& file, const std::string& place, std::int64_t width, std::int64_t height) {
   const std::string size = std::to_string(width) + " x " + std::to_string(height);
   if (width <= 0 || height <= 0) throw InputError(file, place, "bad grid size " + size + " (both must be at least 1)");
@@ -352,6 +356,15 @@ void checkGridSize(const std::string& file, const std::string& place, std::int64
 }
 
 OccupancyGrid readRosGrid(const std::string& yamlPath, const MapOptions& options) {
+  try {
+    return readRosGridChecked(yamlPath, options);
+  } catch (const YAML::Exception& e) {  // a node access not checked: still bad input
+    throw InputError(yamlPath, "line " + std::to_string(e.mark.line + 1), "unexpected YAML: " + e.msg);
+  }
+}
+
+namespace {
+OccupancyGrid readRosGridChecked(const std::string& yamlPath, const MapOptions& options) {
   const std::string text = readFile(yamlPath);
   YAML::Node y;
   try {
@@ -406,6 +419,7 @@ OccupancyGrid readRosGrid(const std::string& yamlPath, const MapOptions& options
   g.originY = oy;
   return g;
 }
+}  // namespace
 
 Workspace readRosMap(const std::string& yamlPath, const MapOptions& options) {
   Workspace w = gridToWorkspace(readRosGrid(yamlPath, options), yamlPath);
