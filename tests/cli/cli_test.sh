@@ -143,5 +143,48 @@ for p in tracc bsa_zigzag full_stc; do
   "$CK" plan --planner $p --radius 0.125 --map "$DATA/rooms.grid" --out "$T/$p.json" > /dev/null && "$CK" evaluate --map "$DATA/rooms.grid" --radius 0.125 --path "$T/$p.json" --json | grep -q '"valid": true' && ok || bad "$p on rooms.grid"
 done
 
+# ---------------------------------------------------------------------------------------------
+# Map and path-file readers (issue 12): images read as map_server reads them, limits checked
+# before anything is allocated, wrong types refused with exit 2 naming the file and the place.
+# The issue's image: 5x5 16-bit RGBA, white but for one grey 49151/65535 pixel (unknown): 24 free.
+printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\000\000\005\000\000\000\005\020\006\000\000\000\335\377\372\246\000\000\000\026\111\104\101\124\170\332\143\370\117\044\140\040\133\341\176\060\244\246\211\270\000\000\173\132\306\171\020\306\252\277\000\000\000\000\111\105\116\104\256\102\140\202' > "$T/rgba16.png"
+printf 'image: rgba16.png\nresolution: 1\norigin: [0, 0, 0]\n' > "$T/rgba16.yaml"
+"$CK" cspace --map "$T/rgba16.yaml" --radius 0.01 --out "$T/rgba16-cspace.json" > "$T/rgba16.out" 2>&1 && grep -q 'of free area 24 ' "$T/rgba16.out" && ok || bad "16-bit RGBA map: $(cat "$T/rgba16.out")"
+# 165 bytes announcing 100000 x 100000 pixels
+printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\001\206\240\000\001\206\240\010\000\000\000\000\215\071\124\024\000\000\000\170\111\104\101\124\170\332\354\301\041\001\000\000\000\002\040\377\237\326\033\006\040\005\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\156\015\000\000\377\377\131\223\353\253' > "$T/huge.png"
+printf 'image: huge.png\nresolution: 0.05\norigin: [0, 0, 0]\n' > "$T/huge.yaml"
+printf 'P5\n16000 16000\n255\n' > "$T/hdr.pgm"; printf 'image: hdr.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n' > "$T/hdr.yaml"
+printf 'image: hdr.pgm\nresolution: 0.05\norigin: [0, 0, 0, 0]\n' > "$T/origin4.yaml"
+printf 'type octile\nheight 100000\nwidth 100000\nmap\n....\n' > "$T/huge.map"
+printf 'type octile\nheight 2\nwidth 3junk\nmap\n...\n...\n' > "$T/junk.map"
+printf 'type octile\nheight 2\nwidth 3.5\nmap\n...\n...\n' > "$T/frac.map"
+printf 'type octile\nheight 2\nwidth 3\nmap\n...\n...\n...\n' > "$T/extra.map"
+printf 'type octile\nheight 2\nwidth 3\nmap\n...\n...\n\n\n' > "$T/trailing.map"
+printf '{"type":"GeometryCollection"}' > "$T/gc-missing.geojson"
+printf '{"type":"GeometryCollection","geometries":3}' > "$T/gc-number.geojson"
+printf '{"type":"Feature","properties":{}}' > "$T/nogeom.geojson"
+printf '{"type":"Polygon","crs":{"type":"name","properties":{"name":"EPSG:4326"}},"coordinates":[[[179.9,1],[180.2,1],[180.2,1.1],[179.9,1]]]}' > "$T/lon.geojson"
+printf '{"format":7,"robots":[]}' > "$T/fmt.json"
+printf '{"format":"coverkit.path/1","planner":3,"robot_radius":0.25,"robots":[{"start":[1,5],"segments":[]}]}' > "$T/planner.json"
+printf '{"format":"coverkit.path/1","robot_radius":0.25,"robots":[{"start":[1,5],"segments":[{"type":"arc","from":[1,5],"to":[2,5],"center":[1.5,5],"ccw":"yes"}]}]}' > "$T/ccw.json"
+printf 'robot,seq,x,y\n0,0,1,5\n0,1,nan,5\n' > "$T/nan.csv"
+expect_bad "png announcing 100000^2 pixels" "huge.png: header: grid of 100000 x 100000 cells is too large (the limit is 268435456 = 2^28 cells)" $(plan) "$T/huge.yaml"
+expect_bad "pgm header without data" "hdr.pgm: pixel data: truncated PGM: 0 of 256000000 pixels" $(plan) "$T/hdr.yaml"
+expect_bad "ros origin of 4 numbers" "origin4.yaml: origin: expected [x, y, yaw], found 4 numbers" $(plan) "$T/origin4.yaml"
+expect_bad "moving ai 100000^2" "huge.map: header: grid of 100000 x 100000 cells is too large (the limit is 268435456" $(plan) "$T/huge.map"
+expect_bad "moving ai width 3junk" "junk.map: line 3: bad width '3junk'" $(plan) "$T/junk.map"
+expect_bad "moving ai width 3.5" "frac.map: line 3: bad width '3.5'" $(plan) "$T/frac.map"
+expect_bad "moving ai extra row" "extra.map: line 7: extra row beyond the height of 2 rows" $(plan) "$T/extra.map"
+"$CK" plan --planner stc --radius 0.25 --map "$T/trailing.map" --out "$T/trailing.json" > /dev/null 2>&1 && ok || bad "moving ai: trailing empty lines refused"
+expect_bad "geometrycollection without geometries" "gc-missing.geojson: geometries: missing" $(plan) "$T/gc-missing.geojson"
+expect_bad "geometrycollection geometries a number" "gc-number.geojson: geometries: expected an array" $(plan) "$T/gc-number.geojson"
+expect_bad "feature without geometry" "nogeom.geojson: geometry: missing" $(plan) "$T/nogeom.geojson"
+expect_bad "lon/lat crs, longitude out of range" "lon.geojson: coordinates[0][1]: longitude 180.2 outside [-180, 180]" $(plan) "$T/lon.geojson"
+expect_bad "path format a number" "fmt.json: format: expected the string" evaluate --map "$T/room.wkt" --path "$T/fmt.json"
+expect_bad "path planner a number" "planner.json: planner: expected a string, found number" evaluate --map "$T/room.wkt" --path "$T/planner.json"
+expect_bad "path arc ccw a string" "ccw.json: robots[0].segments[0].ccw: expected true or false, found string" evaluate --map "$T/room.wkt" --path "$T/ccw.json"
+expect_bad "path csv nan" "nan.csv: line 3: non-finite x 'nan'" evaluate --map "$T/room.wkt" --radius 0.25 --path "$T/nan.csv"
+# --------------------------------------------------------------------------------------------- end of the readers block
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
