@@ -8,6 +8,9 @@ namespace coverkit::experiments {
 /// BSA paper, section 3: 30×30 grid maps with random obstacles, start S(0, 0), spiral against
 /// zigzag filling, over many seeds. Writes OUT/results.csv (one row per seed and filling),
 /// OUT/summary.md (the table) and OUT/backtracking.svg (the distributions). Returns the summary.
+/// The largest --seeds and --size accepted (a size² map is planned, validated and measured per seed).
+constexpr int kBsaMaxSeeds = 100'000;
+constexpr int kBsaMaxSize = 1'000;
 struct BsaExperimentOptions {
   int seeds = 100;
   int size = 30;
