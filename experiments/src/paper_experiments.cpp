@@ -494,6 +494,7 @@ void checkRadiusOnWorlds(const Rational& r, const ExperimentConfig& c, const std
   probe.robots.push_back({r, std::nullopt});
   try {
     planners::checkProblem(probe);
+    planners::checkCellGridSize(probe);
   } catch (const InputError& e) {
     throw InputError(file, key, text + ": " + e.problem());
   }

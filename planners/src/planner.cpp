@@ -128,7 +128,9 @@ std::string shortText(const Rational& q) {
   const double d = q.get_d();
   if (q == 0 || (std::isfinite(d) && d != 0 && std::fabs(d) < 1e300)) return formatDouble(toDouble(q));
   const std::string t = q.get_str();
-  return t.size() > 40 ? t.substr(0, 40) + "..." : t;
+  if (t.size() <= 40) return t;
+  const long e = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 10)) - static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 10));
+  return std::string(q < 0 ? "-" : "") + "about 10^" + std::to_string(e);
 }
 }  // namespace
 
@@ -152,7 +154,6 @@ void checkProblem(const Problem& problem) {
       throw InputError("--start", shortText(r.start->x) + "," + shortText(r.start->y), "start is outside the workspace or inside an obstacle of " + name);
   }
   if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", shortText(*problem.cellSize), "must be > 0");
-  checkCellGridSize(problem);
 }
 
 void checkCellGridSize(const Problem& problem) {
@@ -186,6 +187,7 @@ void checkCellGridSize(const Problem& problem) {
 
 PlanningContext makeContext(Problem problem) {
   checkProblem(problem);
+  checkCellGridSize(problem);  // before the grid is allocated
   PlanningContext ctx;
   const auto t0 = std::chrono::steady_clock::now();
   ctx.cells = classifyCells(problem.workspace, problem.subCellSize());

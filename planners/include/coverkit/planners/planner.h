@@ -73,8 +73,9 @@ struct PlanningContext {
   double cellSeconds = 0;              ///< time spent classifying (reported as a phase)
 };
 
-/// Checks robots, radii, starts and cell size against the workspace (InputError on bad input),
-/// including the size of the sub-cell grid (checkCellGridSize).
+/// Checks robots, radii, starts and cell size against the workspace (InputError on bad input); the
+/// workspace's coordinates must stay within ±10^150 (paths are doubles). makeContext adds
+/// checkCellGridSize; a command without a cell grid (cspace) needs only this.
 void checkProblem(const Problem& problem);
 
 /// The most sub-cells a problem may have (the cell grid takes about 2 bytes per sub-cell, the
@@ -85,8 +86,8 @@ constexpr long kMaxSubCells = 200'000'000L;
 /// exactly, before anything is allocated.
 void checkCellGridSize(const Problem& problem);
 
-/// Builds the context: checks the robot and start (InputError), classifies cells once, and fills in
-/// the default start where none was given (see defaultStart).
+/// Builds the context: checks the problem and the size of its cell grid (InputError) before allocating
+/// anything, classifies cells once, and fills in the default start where none was given (see defaultStart).
 PlanningContext makeContext(Problem problem);
 
 /// The documented default start: the centre of the first free sub-cell, in row order from the
