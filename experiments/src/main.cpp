@@ -325,6 +325,8 @@ int main(int argc, char** argv) {
   std::string experimentConfig;
   experiment->add_option("--config", experimentConfig, "the YAML config of a sweep (default for the coverage-vs-* names: experiments/configs/)");
   experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
+  bool checkOnly = false;
+  experiment->add_flag("--check", checkOnly, "read and check the config, run nothing, write nothing (experiments with a config)");
   experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (default 100)");
   experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
   experiment->add_option("--density", bsaOptions.density, "fraction of blocked cells (default 0.05)");
@@ -464,14 +466,26 @@ int main(int argc, char** argv) {
       const std::map<std::string, std::string> sweeps{{"coverage-vs-size", "coverage_vs_size.yaml"},
                                                       {"coverage-vs-complexity", "coverage_vs_complexity.yaml"},
                                                       {"coverage-vs-shape", "coverage_vs_shape.yaml"}};
+      if (checkOnly && !(sweeps.count(experimentName) || experimentName == "sweep" || experimentName == "coverage-vs-time"))
+        throw InputError("--check", experimentName, "only for the experiments with a config (coverage-vs-*, sweep)");
       if (experimentName == "coverage-vs-time") {
         const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig("coverage_vs_time.yaml") : experimentConfig;
+        if (checkOnly) {
+          experiments::checkCoverageVsTimeConfig(cfg);
+          std::cout << cfg << ": config checked\n";
+          return 0;
+        }
         std::cout << experiments::runCoverageVsTime(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
         return 0;
       }
       if (sweeps.count(experimentName) || experimentName == "sweep") {
         if (experimentName == "sweep" && experimentConfig.empty()) throw InputError("--config", "", "the sweep needs a config file");
         const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig(sweeps.at(experimentName)) : experimentConfig;
+        if (checkOnly) {
+          experiments::checkSweepConfig(cfg);
+          std::cout << cfg << ": config checked\n";
+          return 0;
+        }
         std::cout << experiments::runSweep(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
         return 0;
       }

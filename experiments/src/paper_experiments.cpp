@@ -510,19 +510,23 @@ auto withConfigErrors(const std::string& file, F&& f) {
   }
 }
 
-std::string runSweepConfig(const std::string& configFile, const std::string& outDir);
-std::string runCoverageVsTimeConfig(const std::string& configFile, const std::string& outDir);
+// checkOnly: read and check the config, then return "" (nothing run, nothing written)
+std::string runSweepConfig(const std::string& configFile, const std::string& outDir, bool checkOnly);
+std::string runCoverageVsTimeConfig(const std::string& configFile, const std::string& outDir, bool checkOnly);
 
 }  // namespace
 
 std::string defaultConfig(const std::string& name) { return (std::filesystem::path(COVERKIT_CONFIG_DIR) / name).string(); }
 
 std::string runSweep(const std::string& configFile, const std::string& outDir) {
-  return withConfigErrors(configFile, [&] { return runSweepConfig(configFile, outDir); });
+  return withConfigErrors(configFile, [&] { return runSweepConfig(configFile, outDir, false); });
+}
+void checkSweepConfig(const std::string& configFile) {
+  withConfigErrors(configFile, [&] { return runSweepConfig(configFile, "", true); });
 }
 
 namespace {
-std::string runSweepConfig(const std::string& configFile, const std::string& outDir) {
+std::string runSweepConfig(const std::string& configFile, const std::string& outDir, bool checkOnly) {
   const ExperimentConfig ec = loadExperimentConfig(configFile, 10, {"title", "planners", "vary", "radii", "values", "radius", "worlds"});
   const YAML::Node& cfg = ec.root;
   const std::vector<std::string>& plannerNames = ec.planners;
@@ -563,6 +567,7 @@ std::string runSweepConfig(const std::string& configFile, const std::string& out
     if (vary == "shape" && !datasets::parseObstacleShape(v, st.spec.shape)) throw InputError(configFile, "values", "unknown shape '" + v + "'");
     settings.push_back(st);
   }
+  if (checkOnly) return "";
   datasets::checkOutputFolder(outDir, "--out", {"results.csv", "summary.md", "chart.svg"});
 
   std::ostringstream csv;
@@ -675,7 +680,7 @@ Path prefix(const Path& path, double length) {
   return out;
 }
 
-std::string runCoverageVsTimeConfig(const std::string& configFile, const std::string& outDir) {
+std::string runCoverageVsTimeConfig(const std::string& configFile, const std::string& outDir, bool checkOnly) {
   const ExperimentConfig ec = loadExperimentConfig(configFile, 5, {"planners", "radius", "speed", "steps", "worlds"});
   const YAML::Node& cfg = ec.root;
   const std::vector<std::string>& plannerNames = ec.planners;
@@ -687,6 +692,7 @@ std::string runCoverageVsTimeConfig(const std::string& configFile, const std::st
   if (!(speed > 0)) throw InputError(configFile, "speed", "must be > 0");
   const int steps = configValue<int>(cfg, configFile, "steps", 12);
   if (steps < 1 || steps > 1000) throw InputError(configFile, "steps", std::to_string(steps) + ": must be in 1..1000");
+  if (checkOnly) return "";
   datasets::checkOutputFolder(outDir, "--out", {"results.csv", "summary.md", "chart.svg"});
   datasets::PolygonWorldSpec spec = ec.worlds;
   const std::string& shape = ec.shape;
@@ -770,7 +776,10 @@ std::string runCoverageVsTimeConfig(const std::string& configFile, const std::st
 }  // namespace
 
 std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir) {
-  return withConfigErrors(configFile, [&] { return runCoverageVsTimeConfig(configFile, outDir); });
+  return withConfigErrors(configFile, [&] { return runCoverageVsTimeConfig(configFile, outDir, false); });
+}
+void checkCoverageVsTimeConfig(const std::string& configFile) {
+  withConfigErrors(configFile, [&] { return runCoverageVsTimeConfig(configFile, "", true); });
 }
 
 }  // namespace coverkit::experiments

@@ -38,6 +38,11 @@ std::string runSweep(const std::string& configFile, const std::string& outDir);
 /// exact). Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg.
 std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir);
 
+/// Read and check a config exactly as runSweep / runCoverageVsTime do (the same InputErrors), then
+/// stop: nothing is run or written. For fuzzing the config reader and for tests.
+void checkSweepConfig(const std::string& configFile);
+void checkCoverageVsTimeConfig(const std::string& configFile);
+
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);
 

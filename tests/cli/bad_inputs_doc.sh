@@ -32,7 +32,7 @@ with unique names in the target's folder, renamed into place only when all are c
 rename fails, none of the files appears and replaced files are restored). Limits: at most 2·10^8
 sub-cells (`--radius`, `--cell-size`), coordinates within ±10^150, `--time-limit` finite in
 [0, 10^9] s, `bsa-backtracking` `--size` 2..1000 and `--seeds` 1..100000; experiment configs are
-YAML mappings with known keys and typed, finite values (docs/experiments.md).
+YAML mappings with known keys and typed, finite values (docs/experiments.md; `coverkit experiment NAME --check` checks one and runs nothing).
 
 HEADER
   echo "$rows cases."

@@ -180,6 +180,12 @@ wait $w1; r1=$?; wait $w2; r2=$?
 [ $r1 -eq 0 ] && [ $r2 -eq 0 ] && grep -q '"format": "coverkit.path/1"' "$T/shared.json" && ! ls "$T"/*tmp-coverkit* > /dev/null 2>&1 && ok || bad "concurrent writers: exits $r1 $r2: $(cat "$T/w1.err" "$T/w2.err")"
 # a plan with --out and --picture writes both
 "$CK" plan --planner stc --radius 0.25 --map "$T/room.wkt" --out "$T/both.json" --picture "$T/both.png" > /dev/null && [ -s "$T/both.json" ] && [ -s "$T/both.png" ] && ok || bad "plan with --out and --picture"
+# every shipped config passes the checks (--check runs nothing)
+for c in coverage_vs_size coverage_vs_complexity coverage_vs_shape smooth_stc_additions; do
+  "$CK" experiment sweep --check --config "$DATA/../../experiments/configs/$c.yaml" > /dev/null && ok || bad "shipped config $c refused"
+done
+"$CK" experiment coverage-vs-time --check > /dev/null && ok || bad "shipped coverage_vs_time.yaml refused"
+expect_bad "--check without a config" "--check: tracc-scenarios: only for the experiments with a config" experiment tracc-scenarios --check --out "$T/cfg-out"
 # an experiment's --out folder is created with its parents
 "$CK" experiment sweep --config "$T/cfg-good.yaml" --out "$T/new/deeper" > /dev/null && [ -s "$T/new/deeper/results.csv" ] && ok || bad "sweep into a new nested folder"
 # ---------------------------------------------------------------------------------------------
