@@ -4,11 +4,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace coverkit::datasets {
 
@@ -65,26 +73,227 @@ std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
   return f;
 }
 
-void writeFileAtomically(const std::string& file, const std::string& content) {
-  const fs::path target(file);
-  const fs::path tmp = target.string() + ".tmp-coverkit";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(file, "", "cannot be written (does the folder exist?)");
-    out << content;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError(file, "", "write failed");
+namespace {
+
+std::string errnoText(int e) { return std::strerror(e); }
+
+/// The folder of `file` as a path to use ("." for a bare name).
+fs::path folderOf(const std::string& file) {
+  const fs::path parent = fs::path(file).parent_path();
+  return parent.empty() ? fs::path(".") : parent;
+}
+
+/// InputError unless `folder` is an existing, writable folder.
+void requireWritableFolder(const fs::path& folder, const std::string& file, const std::string& option, const std::string& what) {
+  struct stat st {};
+  if (::stat(folder.c_str(), &st) != 0) {
+    const int e = errno;
+    throw InputError(file, option, what + " '" + folder.string() + "' " + (e == ENOENT ? std::string("does not exist") : "cannot be used: " + errnoText(e)));
+  }
+  if (!S_ISDIR(st.st_mode)) throw InputError(file, option, what + " '" + folder.string() + "' is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    const int e = errno;
+    throw InputError(file, option, what + " '" + folder.string() + "' is not writable: " + errnoText(e));
+  }
+}
+
+/// InputError when `file` exists and is not a regular file (a folder, a device, a socket...).
+void requireReplaceable(const std::string& file, const std::string& option) {
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0) return;  // does not exist (or a dangling link: replaced)
+  if (S_ISDIR(st.st_mode)) throw InputError(file, option, "is a folder, not a file");
+  if (!S_ISREG(st.st_mode)) throw InputError(file, option, "exists and is not a regular file");
+}
+
+/// A new empty file with a unique name beside `target` (mkstemps); returns its path and open descriptor.
+std::pair<std::string, int> uniqueFileBeside(const std::string& target, const char* kind) {
+  std::string name = (folderOf(target) / fs::path(target).filename()).string() + "." + kind + "-XXXXXX.tmp-coverkit";
+  const int suffix = static_cast<int>(std::strlen(".tmp-coverkit"));
+  std::vector<char> buf(name.begin(), name.end());
+  buf.push_back('\0');
+  const int fd = ::mkstemps(buf.data(), suffix);
+  if (fd < 0) {
+    const int e = errno;
+    throw InputError(target, "", "cannot be written: " + errnoText(e));
+  }
+  return {std::string(buf.data()), fd};
+}
+
+/// Writes all of `content` to `fd`; returns 0 or the errno of the failure.
+int writeAll(int fd, const std::string& content) {
+  const char* p = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+mode_t fileMode() {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return static_cast<mode_t>(0666 & ~mask);
+}
+
+}  // namespace
+
+void checkOutputFile(const std::string& file, const std::string& option, const std::vector<std::string>& extensions) {
+  if (file.empty()) throw InputError(option, "", "no file name given");
+  if (!extensions.empty()) {
+    const std::string e = ext(file);
+    if (std::find(extensions.begin(), extensions.end(), e) == extensions.end()) {
+      std::string known;
+      for (std::size_t i = 0; i < extensions.size(); ++i) known += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + extensions[i];
+      throw InputError(file, option, "unknown output format '" + e + "' (expected " + known + ")");
     }
   }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(file, "", "cannot be written: " + ec.message());
+  if (fs::path(file).filename().empty() || fs::path(file).filename() == "." || fs::path(file).filename() == "..")
+    throw InputError(file, option, "names a folder, not a file");
+  requireWritableFolder(folderOf(file), file, option, "folder");
+  requireReplaceable(file, option);
+}
+
+void checkOutputFolder(const std::string& folder, const std::string& option, const std::vector<std::string>& names) {
+  if (folder.empty()) throw InputError(option, "", "no folder name given");
+  struct stat st {};
+  if (::stat(folder.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode)) throw InputError(folder, option, "exists and is not a folder (the output is a folder of files)");
+    requireWritableFolder(folder, folder, option, "folder");
+    for (const std::string& n : names) requireReplaceable((fs::path(folder) / n).string(), option);
+    return;
   }
+  if (errno != ENOENT) {
+    const int e = errno;
+    throw InputError(folder, option, "cannot be used: " + errnoText(e));
+  }
+  // to be created: the nearest existing ancestor must be a writable folder
+  fs::path p = fs::path(folder).lexically_normal();
+  if (p.has_filename() == false) p = p.parent_path();
+  fs::path ancestor = p.parent_path();
+  while (!ancestor.empty() && ::stat(ancestor.c_str(), &st) != 0) {
+    if (errno != ENOENT) {
+      const int e = errno;
+      throw InputError(folder, option, "cannot be created: '" + ancestor.string() + "': " + errnoText(e));
+    }
+    ancestor = ancestor.parent_path();
+  }
+  if (ancestor.empty()) ancestor = p.is_absolute() ? fs::path("/") : fs::path(".");
+  requireWritableFolder(ancestor, folder, option, "cannot be created: folder");
+}
+
+void OutputBatch::add(std::string file, std::string content) { files_.emplace_back(std::move(file), std::move(content)); }
+
+void OutputBatch::addInFolder(const std::string& name, std::string content) {
+  files_.emplace_back((fs::path(folder_) / name).string(), std::move(content));
+}
+
+void OutputBatch::commit() {
+  struct Staged {
+    std::string target, temp, backup;
+    bool renamed = false;
+  };
+  std::vector<Staged> staged;
+  std::vector<fs::path> createdFolders;  // outermost first
+  auto cleanUp = [&]() {
+    // undo in reverse order: restore or remove what was renamed, remove temporary files and folders
+    for (auto it = staged.rbegin(); it != staged.rend(); ++it) {
+      if (it->renamed) {
+        if (!it->backup.empty()) {
+          if (::rename(it->backup.c_str(), it->target.c_str()) == 0) it->backup.clear();
+        } else {
+          ::unlink(it->target.c_str());
+        }
+      } else if (!it->temp.empty()) {
+        ::unlink(it->temp.c_str());
+      }
+      if (!it->backup.empty()) ::unlink(it->backup.c_str());
+    }
+    for (auto it = createdFolders.rbegin(); it != createdFolders.rend(); ++it) ::rmdir(it->c_str());
+  };
+  auto fail = [&](const std::string& file, const std::string& problem) {
+    cleanUp();
+    throw InputError(file, "", problem);
+  };
+  if (!folder_.empty()) {
+    struct stat st {};
+    std::vector<fs::path> missing;
+    for (fs::path p = fs::path(folder_).lexically_normal(); !p.empty() && p != p.root_path(); p = p.parent_path()) {
+      if (!p.has_filename()) continue;
+      if (::stat(p.c_str(), &st) == 0) break;
+      missing.push_back(p);
+    }
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+      if (::mkdir(it->c_str(), 0777) != 0) {
+        const int e = errno;
+        fail(folder_, "folder cannot be created: '" + it->string() + "': " + errnoText(e));
+      }
+      createdFolders.push_back(*it);
+    }
+    if (::stat(folder_.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) fail(folder_, "exists and is not a folder");
+  }
+  const mode_t mode = fileMode();
+  // 1. every file complete in its temporary file
+  for (const auto& [file, content] : files_) {
+    Staged s;
+    s.target = file;
+    int fd = -1;
+    try {
+      std::tie(s.temp, fd) = uniqueFileBeside(file, "new");
+    } catch (const InputError& e) {
+      fail(file, e.problem());
+    }
+    staged.push_back(s);
+    int e = writeAll(fd, content);
+    if (e == 0 && ::fchmod(fd, mode) != 0) e = errno;
+    if (::close(fd) != 0 && e == 0) e = errno;
+    if (e != 0) fail(file, "cannot be written: " + errnoText(e));
+  }
+  // 2. a hard link to every file about to be replaced, so that it can be restored
+  for (Staged& s : staged) {
+    struct stat st {};
+    if (::lstat(s.target.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    std::string backup;
+    int fd = -1;
+    try {
+      std::tie(backup, fd) = uniqueFileBeside(s.target, "old");
+    } catch (const InputError& e) {
+      fail(s.target, e.problem());
+    }
+    ::close(fd);
+    // rename the existing file's link over the placeholder: the placeholder's unique name is kept
+    if (::unlink(backup.c_str()) != 0 || ::link(s.target.c_str(), backup.c_str()) != 0) {
+      const int e = errno;
+      ::unlink(backup.c_str());
+      // no hard links on this file system: keep a copy instead
+      std::error_code ec;
+      if (!fs::copy_file(s.target, backup, fs::copy_options::overwrite_existing, ec))
+        fail(s.target, "cannot be replaced safely: " + errnoText(e) + (ec ? "; " + ec.message() : std::string()));
+    }
+    s.backup = backup;
+  }
+  // 3. into place, all or nothing
+  for (Staged& s : staged) {
+    if (::rename(s.temp.c_str(), s.target.c_str()) != 0) {
+      const int e = errno;
+      fail(s.target, "cannot be written: " + errnoText(e));
+    }
+    s.renamed = true;
+    s.temp.clear();
+  }
+  for (Staged& s : staged)
+    if (!s.backup.empty()) ::unlink(s.backup.c_str());
+}
+
+void writeFileAtomically(const std::string& file, const std::string& content) {
+  OutputBatch batch;
+  batch.add(file, content);
+  batch.commit();
 }
 
 std::string pathJson(const PathDocument& doc) {
@@ -112,19 +321,19 @@ std::string pathJson(const PathDocument& doc) {
   return j.dump(1) + "\n";
 }
 
-void writePathFile(const std::string& file, const PathDocument& doc) {
+std::string pathFileContent(const std::string& file, const PathDocument& doc) {
   const std::string e = ext(file);
   std::ostringstream os;
   os.precision(17);
   if (e == ".json") {
-    writeFileAtomically(file, pathJson(doc));
+    return pathJson(doc);
   } else if (e == ".csv") {
     os << "robot,seq,x,y\n";
     for (std::size_t r = 0; r < doc.paths.size(); ++r) {
       const auto pts = doc.paths[r].polyline(kArcSampleTolerance);
       for (std::size_t i = 0; i < pts.size(); ++i) os << r << ',' << i << ',' << pts[i].x << ',' << pts[i].y << '\n';
     }
-    writeFileAtomically(file, os.str());
+    return os.str();
   } else if (e == ".geojson") {
     json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
     for (std::size_t r = 0; r < doc.paths.size(); ++r) {
@@ -134,13 +343,15 @@ void writePathFile(const std::string& file, const PathDocument& doc) {
                                 {"properties", {{"robot", r}, {"planner", doc.planner}, {"arc_tolerance", kArcSampleTolerance}}},
                                 {"geometry", {{"type", "LineString"}, {"coordinates", coords}}}});
     }
-    writeFileAtomically(file, fc.dump(1) + "\n");
+    return fc.dump(1) + "\n";
   } else {
     throw InputError(file, "--out", "unknown output format '" + e + "' (expected .json, .csv or .geojson)");
   }
 }
 
-void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) {
+void writePathFile(const std::string& file, const PathDocument& doc) { writeFileAtomically(file, pathFileContent(file, doc)); }
+
+std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc) {
   const std::string e = ext(file);
   auto regions = [](const std::vector<CurveRegion>& rs) {
     json out = json::array();
@@ -168,7 +379,7 @@ void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) {
            {"start_component", doc.startComponent},
            {"components", regions(doc.components)},
            {"obstacles", regions(doc.obstacles)}};
-    writeFileAtomically(file, j.dump(1) + "\n");
+    return j.dump(1) + "\n";
   } else if (e == ".geojson") {
     json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
     auto add = [&](const std::vector<CurveRegion>& rs, const char* kind) {
@@ -183,11 +394,13 @@ void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) {
     };
     add(doc.components, "cfree");
     add(doc.obstacles, "cobstacle");
-    writeFileAtomically(file, fc.dump(1) + "\n");
+    return fc.dump(1) + "\n";
   } else {
     throw InputError(file, "--out", "unknown output format '" + e + "' (expected .json or .geojson)");
   }
 }
+
+void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) { writeFileAtomically(file, cspaceFileContent(file, doc)); }
 
 // Reading path files. Every member is checked for its JSON type before it is used; a problem is an
 // InputError naming the file, the place as a path into the document ("robots[0].segments[3].ccw")
