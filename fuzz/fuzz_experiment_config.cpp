@@ -1,16 +1,14 @@
-// Experiment config YAML (experiments/configs/*.yaml) → the loader shared by `coverkit experiment
-// sweep` and `coverage-vs-time` (planners, planner parameters, worlds), as the CLI runs it: the
-// config is a file, written to the scratch folder.
-//
-// The loader is internal to paper_experiments.cpp and runSweep / runCoverageVsTime go on to run
-// the whole experiment, far too slow for fuzzing; so the file is compiled into this target and the
-// loader called directly. A public loader would make this include unnecessary.
+// Experiment config YAML (experiments/configs/*.yaml) → checkSweepConfig and
+// checkCoverageVsTimeConfig: the config read and checked exactly as `coverkit experiment sweep` and
+// `coverage-vs-time` read it, nothing run. The config is a file, written to the scratch folder;
+// each check is held to the contract on its own.
 #include "fuzz_common.h"
 
-#include "../experiments/src/paper_experiments.cpp"
+#include "paper_experiments.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string file = coverkit::fuzz::writeScratch("config.yaml", data, size);
-  coverkit::fuzz::expectReadOrInputError([&] { coverkit::experiments::loadExperimentConfig(file, 10); });
+  coverkit::fuzz::expectReadOrInputError([&] { coverkit::experiments::checkSweepConfig(file); });
+  coverkit::fuzz::expectReadOrInputError([&] { coverkit::experiments::checkCoverageVsTimeConfig(file); });
   return 0;
 }
