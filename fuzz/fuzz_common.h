@@ -37,27 +37,36 @@ void expectReadOrInputError(F&& read) {
 }
 
 /// A private folder for the files a path-taking reader needs, one per process (so -jobs/-fork
-/// work), removed at exit.
+/// work), removed at exit. In $COVERKIT_FUZZ_TMP, else /dev/shm (a file rewritten a million times
+/// on a disk file system waits for the disk: ext4 flushes a truncated-and-rewritten file on close),
+/// else $TMPDIR or /tmp.
 inline const std::filesystem::path& scratchDir() {
-  static const std::filesystem::path dir = [] {
-    const char* base = std::getenv("TMPDIR");
-    std::string templ = std::string(base && *base ? base : "/tmp") + "/coverkit-fuzz-XXXXXX";
+  static const std::filesystem::path* dir = [] {
+    std::string base = "/tmp";
+    std::error_code ec;
+    if (const char* t = std::getenv("COVERKIT_FUZZ_TMP"); t && *t) base = t;
+    else if (std::filesystem::is_directory("/dev/shm", ec) && access("/dev/shm", W_OK) == 0) base = "/dev/shm";
+    else if (const char* t2 = std::getenv("TMPDIR"); t2 && *t2) base = t2;
+    std::string templ = base + "/coverkit-fuzz-XXXXXX";
     if (!mkdtemp(templ.data())) {
       std::perror("coverkit fuzz: mkdtemp");
       std::abort();
     }
+    auto* p = new std::filesystem::path(templ);  // never destroyed: the exit handler below uses it
     std::atexit([] {
-      std::error_code ec;
-      std::filesystem::remove_all(scratchDir(), ec);
+      std::error_code e;
+      std::filesystem::remove_all(scratchDir(), e);
     });
-    return std::filesystem::path(templ);
+    return p;
   }();
-  return dir;
+  return *dir;
 }
 
 /// Writes bytes to scratchDir()/name and returns the full path.
 inline std::string writeScratch(const std::string& name, const std::uint8_t* data, std::size_t size) {
   const std::filesystem::path p = scratchDir() / name;
+  std::error_code ec;
+  std::filesystem::remove(p, ec);  // a new file each time, never truncated (see scratchDir)
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   out.close();
