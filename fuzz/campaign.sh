@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 build="$1" target="$2" dict="$3" cpu="$4" out="$5"
 dir="$out/$target"
 mkdir -p "$dir/corpus" "$dir/artifacts"
-nice -n 19 "$build/fuzz/$target" "$dir/corpus" "fuzz/corpus/$target" -dict="fuzz/dict/$dict.dict" \
+nice -n "${FUZZ_NICE:-10}" "$build/fuzz/$target" "$dir/corpus" "fuzz/corpus/$target" -dict="fuzz/dict/$dict.dict" \
   -timeout=10 -rss_limit_mb=2048 -max_total_time=86400 -print_final_stats=1 \
   -artifact_prefix="$dir/artifacts/" >"$dir/log" 2>&1 &
 pid=$!
