@@ -42,7 +42,9 @@ if(COVERKIT_SANITIZE)
   add_compile_options(-fsanitize=${COVERKIT_SANITIZERS} -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${COVERKIT_SANITIZERS})
   if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
-    add_compile_options(-frounding-math -fsanitize-ignorelist=${CMAKE_CURRENT_LIST_DIR}/ubsan-ignorelist.txt)
+    # -fsanitize-blacklist is the old name of -fsanitize-ignorelist: ccache 4.7 hashes the list's
+    # content only under that name (with the new one, a changed list would not rebuild).
+    add_compile_options(-frounding-math -fsanitize-blacklist=${CMAKE_CURRENT_LIST_DIR}/ubsan-ignorelist.txt)
   else()
     # GCC has no ignore list: the vptr check goes entirely (CGAL's arrangement iterators downcast
     # their DCEL records, cmake/ubsan-ignorelist.txt).
