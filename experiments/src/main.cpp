@@ -424,6 +424,7 @@ int main(int argc, char** argv) {
       std::cout << planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "
                 << (r.validation.valid ? "yes" : "no") << "; sub-cell coverage " << formatDouble(r.metrics.subcellCoverage) << "; length "
                 << formatDouble(r.metrics.length) << "; wrote " << out << "\n";
+      if (!r.metrics.coverableSkipped.empty()) std::cerr << "coverkit: note: coverable coverage not computed: " << r.metrics.coverableSkipped << "\n";
       return succeeded(r.plan.status) && r.validation.valid ? 0 : 1;
     }
     if (*eval) {
@@ -452,6 +453,7 @@ int main(int argc, char** argv) {
       mo.cspace = evalSpace ? &*evalSpace : nullptr;
       mo.pathsKnownClear = v.valid;
       const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, mo);
+      if (!m.coverableSkipped.empty()) std::cerr << "coverkit: note: coverable coverage not computed: " << m.coverableSkipped << "\n";
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);
       return v.valid ? 0 : 1;

@@ -19,6 +19,10 @@ struct MetricOptions {
   /// Also measure against the coverable region (start's component of C-free ⊕ disc(r)); builds the
   /// C-space (radius r and 2r), so it is off unless asked for.
   bool coverable = false;
+  /// ...but only for workspaces of at most this many vertices when no C-space is given: the
+  /// C-space of a large polygon costs minutes (13 s at 10^4 vertices, docs/performance.md), far
+  /// more than planning. Above it the coverable metrics are left out (Metrics::coverableSkipped).
+  std::size_t coverableMaxVertices = 20000;
   /// The C-space to measure the coverable region against, when the caller has one for this
   /// workspace and radius already (else it is built).
   const CSpace* cspace = nullptr;
@@ -40,6 +44,7 @@ struct Metrics {
   std::string areaMethod;              ///< "exact" or "raster"
   double sweptAreaOverlap = 0;         ///< (Σ 2r·len + πr²) / coveredArea − 1
   bool hasCoverable = false;           ///< the three below were computed
+  std::string coverableSkipped;        ///< why they were not, although asked for (else empty)
   double coverableArea = 0;            ///< area of (start components of C-free) ⊕ disc(r)
   double coverableAreaError = 0;       ///< bound on |coverableArea − true value|
   double coverableCoverage = 0;        ///< coveredArea / coverableArea
