@@ -190,6 +190,22 @@ expect_bad "--check without a config" "--check: tracc-scenarios: only for the ex
 "$CK" experiment sweep --config "$T/cfg-good.yaml" --out "$T/new/deeper" > /dev/null && [ -s "$T/new/deeper/results.csv" ] && ok || bad "sweep into a new nested folder"
 # ---------------------------------------------------------------------------------------------
 
+# evaluate's verdict on pieces far outside the map (issue 12): invalid (exit 1), in seconds
+printf 'POLYGON((0 0,10 0,10 10,0 10,0 0),(4 4,4 6,6 6,6 4,4 4))' > "$T/room10.wkt"
+far_case() {  # name, segment JSON
+  printf '{"format":"coverkit.path/1","robot_radius":0.25,"robots":[{"start":[1,1],"segments":[%s]}]}' "$2" > "$T/far.json"
+  timeout 60 "$CK" evaluate --map "$T/room10.wkt" --path "$T/far.json" > "$T/far.out" 2>&1
+  local rc=$?
+  [ $rc -eq 1 ] && grep -q 'valid: no' "$T/far.out" && ok || bad "evaluate $1: exit $rc, $(head -2 "$T/far.out")"
+}
+for c in 1e150 1e160 1e200 1e300; do
+  far_case "arc about ($c, 1) the long way" '{"type":"arc","from":[1,1],"to":[1,1.5],"center":['$c',1],"ccw":true}'
+done
+far_case "segment to x = 7.2e9" '{"type":"line","from":[1,1],"to":[7.2e9,1]}'
+far_case "near-full circle of radius 2e154" '{"type":"arc","from":[1,1],"to":[1,1.0000000000000002],"center":[2e154,1],"ccw":true}'
+far_case "arc of radius 1e7" '{"type":"arc","from":[1,1],"to":[1,1.5],"center":[1e7,1],"ccw":true}'
+far_case "arc of radius 1e12" '{"type":"arc","from":[1,1],"to":[1,1.5],"center":[1e12,1],"ccw":true}'
+
 # good input
 if "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.json" --picture "$T/good.svg" > "$T/stdout"; then ok; else bad "plan failed"; fi
 [ -s "$T/good.svg" ] && ok || bad "no picture"
