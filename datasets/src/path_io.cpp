@@ -180,14 +180,13 @@ void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) {
     json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
     // C-free inside the exact C-free (every edge checked exactly when the workspace is known),
     // C-obstacles with their arcs replaced outside (docs/formats.md)
-    std::vector<std::size_t> index;  // sampled component → its index in doc.components
+    std::vector<std::size_t> index;  // sampled piece → its component in doc.components
     std::vector<SampledRegion> cfree;
-    if (doc.workspace) {
-      std::vector<SampledRegion> all = sampleFreeRegions(doc.components, *doc.workspace, doc.robotRadius, kArcSampleTolerance);
-      for (std::size_t i = 0; i < all.size(); ++i) {
-        if (all[i].outer.empty()) continue;  // could not be made safe: left out (never seen)
-        cfree.push_back(std::move(all[i]));
-        index.push_back(i);
+    if (doc.cspace) {
+      for (CSpace::SampledComponent& c : doc.cspace->sampledComponents(kArcSampleTolerance)) {
+        if (c.component < 0 || static_cast<std::size_t>(c.component) >= doc.components.size()) continue;
+        index.push_back(static_cast<std::size_t>(c.component));
+        cfree.push_back(std::move(c.region));
       }
     } else {
       cfree = sampleRegions(doc.components, kArcSampleTolerance, true);

@@ -349,7 +349,7 @@ int main(int argc, char** argv) {
       doc.cfreeArea = cs.area();
       doc.components = cs.components();
       doc.obstacles = cs.obstacles();
-      doc.workspace = &problem.workspace;  // GeoJSON: C-free polygons checked to lie in the exact C-free
+      doc.cspace = &cs;  // GeoJSON: C-free polygons checked to lie in the exact C-free
       if (problem.robots[0].start) {
         doc.start = PointD{problem.robots[0].start->x.get_d(), problem.robots[0].start->y.get_d()};
         doc.startComponent = cs.componentOf(*problem.robots[0].start);

@@ -2,6 +2,7 @@
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/metrics.h>
+#include <coverkit/geometry/sampling.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/General_polygon_set_2.h>
@@ -378,6 +379,21 @@ double CSpace::coverableArea(const std::vector<Point>& starts, double& errorBoun
   }
   errorBound = it->second.second;
   return it->second.first;
+}
+
+std::vector<CSpace::SampledComponent> CSpace::sampledComponents(double tolerance) const {
+  // radius r + 4·eps: its C-free lies in the exact C-free of radius r with room to spare for the
+  // approximation and for rounding, and gaps exactly 2r wide no longer pinch it to a point
+  const CSpace grown(impl_->workspace, Rational(impl_->radius + 4 * exactFromDouble(impl_->eps)), impl_->relativeEps);
+  const std::vector<CurveRegion> comps = grown.components();
+  std::vector<SampledRegion> sampled = sampleFreeRegions(comps, impl_->workspace, impl_->radius, tolerance);
+  std::vector<SampledComponent> out;
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (sampled[i].outer.empty() || comps[i].outer.pieces.empty()) continue;
+    const PointD v = comps[i].outer.pieces.front().from;  // > r from the obstacles: inside one component
+    out.push_back({componentOf({exactFromDouble(v.x), exactFromDouble(v.y)}), std::move(sampled[i])});
+  }
+  return out;
 }
 
 CellState CSpaceCells::mega(int col, int row) const {

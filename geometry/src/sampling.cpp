@@ -51,16 +51,34 @@ void sampleArc(const PathSegment& s, double tolerance, ArcSide side, std::vector
   const double m = marginOf(std::max(std::abs(g.cx), std::abs(g.cy)) + g.rho);
   const double t = std::max(tolerance, 8 * m);
   if (side == ArcSide::kOutside) {
-    // a polygon whose edges are tangent to the circle of radius ρ + m + (a margin): its vertices lie
-    // at ρ' / cos(h/2) + m, which must stay within t of the circle ρ
+    // a polygon whose edges are tangent to the circle of radius ρ' = ρ + m, vertices at
+    // ρ' / cos(h/2) + m (within t of the circle ρ), except its first and last edges: those run on
+    // the tangents at `from` and `to` themselves, so that where those are axis-parallel (grid maps:
+    // every arc ends on one) they are exact, and a boundary pinched to a point between two
+    // C-obstacles (a gap exactly 2r wide) passes it along the common tangent
     const double rp = g.rho + m;
     const double c = std::min(1.0, rp / (g.rho + t - m));
     const double h = std::min(2 * std::acos(c), M_PI / 2);
-    const int n = static_cast<int>(std::min<double>(kMaxPiecesPerArc, std::max(1.0, std::ceil(g.sweep / std::max(h, 1e-300)))));
+    const int n = static_cast<int>(std::min<double>(kMaxPiecesPerArc, std::max(2.0, std::ceil(g.sweep / std::max(h, 1e-300)))));
     const double hh = g.sweep / n;
     const double R = rp / std::cos(hh / 2) + m;
-    for (int k = 0; k < n; ++k) {
+    // along the end tangents far enough that the next edge clears the circle ρ by m as well
+    const double d = rp * std::tan(hh / 2) + 2 * m / std::sin(hh);
+    auto endVertex = [&](PointD p, double sign) {  // sign +1 at `from` (ahead), −1 at `to` (back)
+      const double ex = p.x - g.cx, ey = p.y - g.cy, len = std::hypot(ex, ey);
+      const double tx = -g.dir * ey / len, ty = g.dir * ex / len;  // direction of travel
+      const double out = (ex == 0 || ey == 0) ? 0 : m / len;          // off axis: a margin outward
+      return PointD{p.x + sign * d * tx + out * ex, p.y + sign * d * ty + out * ey};
+    };
+    out.push_back(endVertex(s.from, 1));
+    for (int k = 1; k + 1 < n; ++k) {
       const double a = g.a0 + g.dir * (k + 0.5) * hh;
+      out.push_back({g.cx + R * std::cos(a), g.cy + R * std::sin(a)});
+    }
+    const double ex = s.to.x - g.cx, ey = s.to.y - g.cy;
+    if (ex != 0 || ey != 0) out.push_back(endVertex(s.to, -1));
+    else {
+      const double a = g.a0 + g.dir * (n - 0.5) * hh;
       out.push_back({g.cx + R * std::cos(a), g.cy + R * std::sin(a)});
     }
   } else if (g.rho > 4 * m) {
@@ -207,14 +225,17 @@ struct WorkRing {
   std::size_t prev(std::size_t i) const { return (i + pts.size() - 1) % pts.size(); }
 };
 
-/// Cusps: where two arcs (or an arc and a line) of the boundary meet tangentially with the region
-/// between them, the boundary reverses. Replaced outside their circles, both sides run along the
-/// common tangent there and may cross by the margin; the tip is cut straight across, where the cut
-/// passes the exact test and the two sides no longer cross (a sliver of area, ~ s³ / r).
-void cutCusps(WorkRing& w, ClearanceChecker& check, double tolerance) {
+/// Cusps and sharp spikes: where two arcs (or an arc and a line) of the boundary meet tangentially
+/// with the region between them, the boundary reverses; where they meet at a small angle (a gap a
+/// little wider than 2r), it nearly does. Replaced outside their circles, the two sides run along
+/// (nearly) the same tangent there and may cross; the tip is cut straight across where the cut
+/// passes the exact test and the two sides no longer cross (a sliver of area). A corner of the other
+/// kind (the region outside a sharp turn) cannot be cut: the cut would cross the obstacle, and the
+/// exact test refuses it.
+void cutCusps(WorkRing& w, ClearanceChecker& check, double tolerance, double margin) {
   for (std::size_t i = 0; i < w.size() && w.size() > 4; ++i) {
     const Dir ui = unit(w.pts[w.prev(i)], w.pts[i]), uo = unit(w.pts[i], w.pts[w.next(i)]);
-    if (ui.x * uo.x + ui.y * uo.y > -0.999) continue;
+    if (ui.x * uo.x + ui.y * uo.y > -0.866) continue;  // turns by less than 150°
     // walk s back and forth along the ring from the tip
     for (double s = 8 * tolerance; s < 1e6 * tolerance; s *= 2) {
       const std::size_t n = w.size();
@@ -230,7 +251,10 @@ void cutCusps(WorkRing& w, ClearanceChecker& check, double tolerance) {
       const std::size_t pa = (a + n - 1) % n;
       const double la = std::hypot(w.pts[a].x - w.pts[pa].x, w.pts[a].y - w.pts[pa].y);
       const double ta = la > 0 ? std::min(1.0, left / la) : 0;
-      const PointD P{w.pts[a].x + ta * (w.pts[pa].x - w.pts[a].x), w.pts[a].y + ta * (w.pts[pa].y - w.pts[a].y)};
+      // P and Q a few ulps into the region (left of their edges): the sides may be rounded outward
+      const Dir ea = unit(w.pts[pa], w.pts[a]);
+      const PointD P{w.pts[a].x + ta * (w.pts[pa].x - w.pts[a].x) - 4 * margin * ea.y,
+                     w.pts[a].y + ta * (w.pts[pa].y - w.pts[a].y) + 4 * margin * ea.x};
       double right = s;
       while (true) {
         const std::size_t nb = (b + 1) % n;
@@ -242,10 +266,16 @@ void cutCusps(WorkRing& w, ClearanceChecker& check, double tolerance) {
       const std::size_t nb = (b + 1) % n;
       const double lb = std::hypot(w.pts[nb].x - w.pts[b].x, w.pts[nb].y - w.pts[b].y);
       const double tb = lb > 0 ? std::min(1.0, right / lb) : 0;
-      const PointD Q{w.pts[b].x + tb * (w.pts[nb].x - w.pts[b].x), w.pts[b].y + tb * (w.pts[nb].y - w.pts[b].y)};
+      const Dir eb = unit(w.pts[b], w.pts[nb]);
+      const PointD Q{w.pts[b].x + tb * (w.pts[nb].x - w.pts[b].x) - 4 * margin * eb.y,
+                     w.pts[b].y + tb * (w.pts[nb].y - w.pts[b].y) + 4 * margin * eb.x};
       // the vertices a … b (cyclically) go; at least 3 must stay besides P and Q
       std::size_t removed = (b + n - a) % n + 1;
       if (removed + 3 > n || pa == nb) break;
+      // the cut must leave no spike at its ends (where both sides run along one tangent, a cut
+      // shorter than that stretch has length zero) and must not cross the sides or the obstacles
+      const Dir up = unit(w.pts[pa], P), pq = unit(P, Q), qn = unit(Q, w.pts[nb]);
+      if ((pq.x == 0 && pq.y == 0) || up.x * pq.x + up.y * pq.y < -0.866 || pq.x * qn.x + pq.y * qn.y < -0.866) continue;
       if (crosses(w.pts[pa], P, Q, w.pts[nb]) || !check.clear(exact(P), exact(Q))) continue;
       std::vector<PointD> pts;
       std::vector<int> owner;
@@ -314,17 +344,40 @@ std::vector<PointD> safeRing(const CurveLoop& loop, ClearanceChecker& check, dou
   std::vector<double> tols(loop.pieces.size(), tolerance);
   WorkRing w;
   auto allOk = [&] { return std::all_of(w.ok.begin(), w.ok.end(), [](char c) { return c != 0; }); };
+  auto verify = [&] {
+    w.ok.assign(w.size(), 0);
+    for (std::size_t i = 0; i < w.size(); ++i) w.ok[i] = check.clear(exact(w.pts[i]), exact(w.pts[w.next(i)]));
+  };
   for (int attempt = 0; attempt < 5; ++attempt) {
     w.pts = ringOf(loop, tols, true, w.owner);
     if (w.size() < 3) return {};
-    cutCusps(w, check, tolerance);
-    const std::size_t n = w.size();
-    w.ok.assign(n, 0);
-    for (std::size_t i = 0; i < n; ++i) w.ok[i] = check.clear(exact(w.pts[i]), exact(w.pts[w.next(i)]));
-    if (allOk()) break;
     double scale = 0;
     for (PointD p : w.pts) scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
-    repair(w, check, tolerance, marginOf(scale));
+    const double m = marginOf(scale);
+    verify();
+    // vertices rounded to doubles on the wrong side (a whole edge may lie an ulp outside, e.g. a
+    // rectangle x = 2.65 whose corners all round outward): move the ends of every failing edge into
+    // the region together, a few ulps at first, four times farther each round, up to 2^-36 of the
+    // coordinates (far below the tolerance; what rounding cannot explain is left to the steps below)
+    for (double mu = m; !allOk() && mu <= std::ldexp(scale, -36); mu *= 4) {
+      const std::size_t k = w.size();
+      std::vector<char> move(k, 0);
+      for (std::size_t i = 0; i < k; ++i)
+        if (!w.ok[i]) move[i] = move[w.next(i)] = 1;
+      std::vector<PointD> moved = w.pts;
+      for (std::size_t i = 0; i < k; ++i)
+        if (move[i]) moved[i] = nudged(w.pts, i, mu);
+      w.pts.swap(moved);
+      for (std::size_t i = 0; i < k; ++i)
+        if (move[i]) {
+          w.ok[w.prev(i)] = check.clear(exact(w.pts[w.prev(i)]), exact(w.pts[i]));
+          w.ok[i] = check.clear(exact(w.pts[i]), exact(w.pts[w.next(i)]));
+        }
+    }
+    cutCusps(w, check, tolerance, m);
+    verify();
+    if (allOk()) break;
+    repair(w, check, tolerance, m);
     if (allOk()) break;
     // lines that still fail cross something near the arc they replace: sample those arcs finer
     bool refined = false;

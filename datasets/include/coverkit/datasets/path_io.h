@@ -48,9 +48,10 @@ struct CSpaceDocument {
   std::optional<PointD> start;
   int startComponent = -1;
   std::vector<CurveRegion> components, obstacles;
-  /// The workspace (optional, not owned): with it, the GeoJSON's C-free polygons are checked exactly
-  /// to lie in the exact C-free of radius robotRadius (docs/formats.md).
-  const Workspace* workspace = nullptr;
+  /// The C-space the components came from (optional, not owned): with it, the GeoJSON's C-free
+  /// polygons are CSpace::sampledComponents, checked to lie in the exact C-free (docs/formats.md);
+  /// without it, the components' arcs are replaced outside their circles, unchecked.
+  const CSpace* cspace = nullptr;
 };
 void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc);
 

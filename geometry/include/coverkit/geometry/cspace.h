@@ -53,6 +53,13 @@ struct CurveRegion {
   double area = 0;
 };
 
+/// A region as rings of doubles (line segments only): outer counter-clockwise, holes clockwise, the
+/// first point not repeated. geometry/sampling.h makes them.
+struct SampledRegion {
+  std::vector<PointD> outer;
+  std::vector<std::vector<PointD>> holes;
+};
+
 /// Cells classified by C-space (the robot's centre), with the C-free contour of every partial
 /// mega-cell. Sub-cell states: free = the closed cell lies in C-free (the centre may be anywhere in
 /// it); blocked = the cell and C-free share no interior point (touching along an edge or a point
@@ -129,6 +136,19 @@ public:
   /// and the two parts' overlap (a band of width δ + eps' inside the first). Starts in no
   /// component add nothing. Built on first use.
   double coverableArea(const std::vector<Point>& starts, double& errorBound) const;
+
+  /// C-free as polygons of line segments that lie in the exact closed C-free, for line-only files
+  /// (GeoJSON): the components of the C-space of radius r + 4·eps (so the approximation's own error
+  /// and the rounding of its points to doubles stay on the safe side, and pinch points where two
+  /// C-obstacles touch, gaps exactly 2r wide, open), arcs replaced outside their circles within
+  /// `tolerance`, every edge then checked exactly at radius r (sampling.h: sampleFreeRegions).
+  /// `component` is the index in components() of the component holding each; a piece that could
+  /// not be made safe is left out (never seen).
+  struct SampledComponent {
+    int component = -1;
+    SampledRegion region;
+  };
+  std::vector<SampledComponent> sampledComponents(double tolerance) const;
 
   /// Classifies the cells of `grid` by C-space: recursive quadrant clipping, so the cost follows the
   /// cells that C-free's boundary crosses, not all cells × all curves. With `contours`, partial

@@ -14,9 +14,10 @@
 //  - C-free: every arc of a C-free boundary has the C-obstacle inside its circle (offsets of
 //    obstacle corners), so C-free lies outside and its sampled boundary runs outside the circle;
 //    each line of the result is checked exactly (ClearanceChecker, radius r: the exact closed
-//    C-free), vertices rounded to doubles the wrong way are moved into C-free, arcs whose lines
-//    still fail are sampled more finely. A component that cannot be made safe is left out (never
-//    seen): the polygons written lie in the exact C-free, they never claim more.
+//    C-free), vertices rounded to doubles the wrong way are moved into C-free, sharp spikes and
+//    cusps are cut, arcs whose lines still fail are sampled more finely. A component that cannot be
+//    made safe is left out: the polygons written lie in the exact C-free, they never claim more.
+//    CSpace::sampledComponents feeds it the C-space of radius r + 4·eps, where nothing is pinched.
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/path.h>
 
@@ -49,12 +50,6 @@ struct SafePolyline {
 /// path: each arc is sampled on the side, and as finely, as ClearanceChecker(w, r) accepts.
 SafePolyline safePolyline(const Path& path, const Workspace& w, const Rational& r, double tolerance);
 
-/// A region as rings of doubles: outer counter-clockwise, holes clockwise, the first point not
-/// repeated.
-struct SampledRegion {
-  std::vector<PointD> outer;
-  std::vector<std::vector<PointD>> holes;
-};
 /// C-free components as polygons inside the exact (closed) C-free of radius r: every edge of every
 /// ring passes ClearanceChecker(w, r). One result per component, in order; a component that could
 /// not be made safe has an empty `outer` (left out by the writers).
