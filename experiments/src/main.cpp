@@ -13,7 +13,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -64,6 +67,18 @@ std::map<std::string, std::string> parseParams(const std::vector<std::string>& k
     out[s.substr(0, eq)] = s.substr(eq + 1);
   }
   return out;
+}
+
+/// --time-limit: a finite number of seconds ≥ 0 (0: none), at most 10^9 (a deadline must stay a
+/// steady_clock time point).
+double parseTimeLimit(const std::string& text) {
+  if (text.empty()) return 0;
+  char* end = nullptr;
+  errno = 0;
+  const double t = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0') throw InputError("--time-limit", text, "not a number of seconds");
+  if (!std::isfinite(t) || t < 0 || t > 1e9) throw InputError("--time-limit", text, "must be a finite number of seconds in [0, 10^9] (0: no limit)");
+  return t;
 }
 
 Problem makeProblem(const std::string& map, const std::string& radius, const std::string& start, bool unknownFree,
@@ -136,15 +151,26 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
   };
   std::vector<Scenario> scenarios;
   std::string line;
+  int lineNo = 0;
   while (std::getline(list, line)) {
+    ++lineNo;
     if (line.empty() || line[0] == '#') continue;
     std::istringstream ls(line);
     Scenario s;
-    ls >> s.name >> s.file >> s.radius;
+    if (!(ls >> s.name >> s.file >> s.radius))
+      throw InputError((data / "scenarios.txt").string(), "line " + std::to_string(lineNo), "expected NAME FILE RADIUS");
     scenarios.push_back(s);
   }
-  fs::create_directories(outDir);
   const auto names = planners::Registry::instance().names();
+  {
+    std::vector<std::string> outputs{"results.csv", "report.md", "run.json"};
+    for (const Scenario& s : scenarios) {
+      outputs.push_back(s.name + "_cspace.png");
+      for (const std::string& planner : names) outputs.push_back(s.name + "_" + planner + ".png");
+    }
+    datasets::checkOutputFolder(outDir, "--out", outputs);
+  }
+  datasets::OutputBatch outputs(outDir);
   Progress progress(scenarios.size() * names.size());
   std::ostringstream csv, md;
   csv << "planner,map,seed,params,status,valid,violations";
@@ -172,7 +198,7 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
       pc.cfree = &cfree;
       pc.cobstacles = &cobs;
       pc.title = s.name + " / C-space, r=" + s.radius + " / " + std::to_string(cfree.size()) + " component(s)";
-      experiments::renderPicture((fs::path(outDir) / (s.name + "_cspace.png")).string(), pc);
+      outputs.addInFolder(s.name + "_cspace.png", experiments::pictureBytes(s.name + "_cspace.png", pc));
       cspaceMd << "### " << s.name << " — C-space\n\nC-free: " << cfree.size() << " component(s), area " << formatDouble(std::round(cs.area() * 1000) / 1000)
                 << " of free area " << formatDouble(std::round(freeArea(ctx.problem.workspace).get_d() * 1000) / 1000) << ".\n\n![" << s.name
                 << " C-space](" << s.name << "_cspace.png)\n\n";
@@ -198,7 +224,7 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
       pc.paths = &r.plan.paths;
       pc.radius = ctx.problem.robots[0].radius.get_d();
       pc.title = s.name + " / " + planner + " / r=" + s.radius + " / " + toString(r.plan.status);
-      experiments::renderPicture((fs::path(outDir) / pic).string(), pc);
+      outputs.addInFolder(pic, experiments::pictureBytes(pic, pc));
       std::ostringstream cov;
       cov << std::fixed << std::setprecision(4) << r.metrics.subcellCoverage << " | " << r.metrics.areaCoverage << " (" << r.metrics.areaMethod
           << ") | " << r.metrics.coverableCoverage << " ± " << std::setprecision(4)
@@ -215,11 +241,12 @@ int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
         "(obstacles ⊕ disc and the band along the walls).\n\n"
      << cspaceMd.str();
   md << "Columns are defined in docs/metrics.md; results.csv holds every metric and per-phase time.\n";
-  datasets::writeFileAtomically((fs::path(outDir) / "results.csv").string(), csv.str());
-  datasets::writeFileAtomically((fs::path(outDir) / "report.md").string(), md.str());
+  outputs.addInFolder("results.csv", csv.str());
+  outputs.addInFolder("report.md", md.str());
   nlohmann::json meta{{"version", COVERKIT_VERSION}, {"git_revision", COVERKIT_GIT_REVISION}, {"host", hostName()}, {"date", today()},
                       {"scenarios", scenarios.size()}, {"planners", names}};
-  datasets::writeFileAtomically((fs::path(outDir) / "run.json").string(), meta.dump(1) + "\n");
+  outputs.addInFolder("run.json", meta.dump(1) + "\n");
+  outputs.commit();
   if (!quiet)
     std::cout << "coverkit demo: " << scenarios.size() * names.size() << " plans, " << invalid << " invalid; report: "
               << (fs::path(outDir) / "report.md").string() << "\n";
@@ -236,7 +263,7 @@ int main(int argc, char** argv) {
   std::string map, radius, start, out, picture, planner = "stc", pathFile, cellSize;
   std::vector<std::string> params;
   bool unknownFree = false, json = false, showCells = false, showTree = false, showCspace = false, quiet = false;
-  double timeLimit = 0;
+  std::string timeLimitText;
 
   auto addMapOptions = [&](CLI::App* c, bool needRadius) {
     c->add_option("--map", map, "map file (.yaml ROS map, .map Moving AI, .wkt, .geojson, .grid)")->required();
@@ -250,7 +277,7 @@ int main(int argc, char** argv) {
   plan->add_option("--planner", planner, "planner name (see 'coverkit list')")->required();
   plan->add_option("--start", start, "start X,Y (default: centre of the first free sub-cell of the largest free component)");
   plan->add_option("--param", params, "planner parameter KEY=VALUE (repeatable)");
-  plan->add_option("--time-limit", timeLimit, "seconds (0: none)");
+  plan->add_option("--time-limit", timeLimitText, "seconds, finite and >= 0 (0: none)");
   plan->add_option("--out", out, "output path file (.json, .csv, .geojson)")->required();
   plan->add_option("--picture", picture, "picture (.png, .svg)");
 
@@ -299,6 +326,8 @@ int main(int argc, char** argv) {
   std::string experimentConfig;
   experiment->add_option("--config", experimentConfig, "the YAML config of a sweep (default for the coverage-vs-* names: experiments/configs/)");
   experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
+  bool checkOnly = false;
+  experiment->add_flag("--check", checkOnly, "read and check the config, run nothing, write nothing (experiments with a config)");
   experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (default 100)");
   experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
   experiment->add_option("--density", bsaOptions.density, "fraction of blocked cells (default 0.05)");
@@ -332,9 +361,8 @@ int main(int argc, char** argv) {
     }
     if (*demo) return cmdDemo(demoOut, dataDir, quiet);
     if (*cspace) {
-      { const std::string e = fs::path(out).extension().string();
-        if (e != ".json" && e != ".geojson") throw InputError(out, "--out", "unknown output format '" + e + "' (expected .json or .geojson)"); }
-      if (!picture.empty()) experiments::checkPictureName(picture);
+      datasets::checkOutputFile(out, "--out", {".json", ".geojson"});
+      if (!picture.empty()) experiments::checkPictureOutput(picture);
       Progress progress(3);
       progress.step("reading the map");
       const Problem problem = makeProblem(map, radius, start, unknownFree, cellSize);
@@ -355,15 +383,17 @@ int main(int argc, char** argv) {
         doc.startComponent = cs.componentOf(*problem.robots[0].start);
       }
       progress.step("writing");
-      datasets::writeCSpaceFile(out, doc);
+      datasets::OutputBatch outputs;
+      outputs.add(out, datasets::cspaceFileContent(out, doc));
       if (!picture.empty()) {
         experiments::PictureContent pc;
         pc.workspace = &problem.workspace;
         pc.cfree = &doc.components;
         pc.cobstacles = &doc.obstacles;
         pc.title = "C-space of " + fs::path(map).filename().string() + ", r = " + radius;
-        experiments::renderPicture(picture, pc);
+        outputs.add(picture, experiments::pictureBytes(picture, pc));
       }
+      outputs.commit();
       std::cout << "C-free: " << doc.components.size() << " component(s), area " << formatDouble(doc.cfreeArea) << " of free area "
                 << formatDouble(doc.freeArea) << " (epsilon " << formatDouble(doc.epsilon) << ")";
       if (doc.start) std::cout << "; start in component " << doc.startComponent;
@@ -372,9 +402,10 @@ int main(int argc, char** argv) {
     }
     if (*plan) {
       const auto kv = parseParams(params);
+      const double timeLimit = parseTimeLimit(timeLimitText);
       if (!picture.empty()) experiments::checkPictureName(picture);
-      { const std::string e = fs::path(out).extension().string();
-        if (e != ".json" && e != ".csv" && e != ".geojson") throw InputError(out, "--out", "unknown output format '" + e + "' (expected .json, .csv or .geojson)"); }
+      datasets::checkOutputFile(out, "--out", {".json", ".csv", ".geojson"});
+      if (!picture.empty()) experiments::checkPictureOutput(picture);
       planners::Registry::instance().create(planner);  // unknown planner: before any work
       Progress progress(6);
       progress.step("reading the map");
@@ -384,12 +415,14 @@ int main(int argc, char** argv) {
       const experiments::RunResult r =
           experiments::runOnce(ctx, planner, kv, timeLimit, [&](const std::string& what) { progress.step(what); });
       progress.step("writing");
-      datasets::writePathFile(out, makeDocument(ctx, r));
+      datasets::OutputBatch outputs;  // everything made in memory first, then written all or nothing
+      outputs.add(out, datasets::pathFileContent(out, makeDocument(ctx, r)));
       if (!picture.empty()) {
         experiments::PictureContent pc{&ctx.problem.workspace, &ctx.cells, &r.plan.treeEdges, &r.plan.paths, ctx.problem.robots[0].radius.get_d(),
                                        planner + " on " + fs::path(map).filename().string()};
-        experiments::renderPicture(picture, pc);
+        outputs.add(picture, experiments::pictureBytes(picture, pc));
       }
+      outputs.commit();
       std::cout << planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "
                 << (r.validation.valid ? "yes" : "no") << "; sub-cell coverage " << formatDouble(r.metrics.subcellCoverage) << "; length "
                 << formatDouble(r.metrics.length) << "; wrote " << out << "\n";
@@ -426,17 +459,35 @@ int main(int argc, char** argv) {
       return v.valid ? 0 : 1;
     }
     if (*experiment) {
+      // options that only some experiments read are refused elsewhere rather than ignored
+      for (const char* o : {"--seeds", "--size", "--density", "--obstacles"})
+        if (experiment->count(o) && experimentName != "bsa-backtracking")
+          throw InputError(o, experimentName, "applies to the bsa-backtracking experiment only");
+      if (experiment->count("--config") && (experimentName == "bsa-backtracking" || experimentName == "tracc-scenarios"))
+        throw InputError("--config", experimentName, "this experiment takes no config (it has options or is fixed)");
       const std::map<std::string, std::string> sweeps{{"coverage-vs-size", "coverage_vs_size.yaml"},
                                                       {"coverage-vs-complexity", "coverage_vs_complexity.yaml"},
                                                       {"coverage-vs-shape", "coverage_vs_shape.yaml"}};
+      if (checkOnly && !(sweeps.count(experimentName) || experimentName == "sweep" || experimentName == "coverage-vs-time"))
+        throw InputError("--check", experimentName, "only for the experiments with a config (coverage-vs-*, sweep)");
       if (experimentName == "coverage-vs-time") {
         const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig("coverage_vs_time.yaml") : experimentConfig;
+        if (checkOnly) {
+          experiments::checkCoverageVsTimeConfig(cfg);
+          std::cout << cfg << ": config checked\n";
+          return 0;
+        }
         std::cout << experiments::runCoverageVsTime(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
         return 0;
       }
       if (sweeps.count(experimentName) || experimentName == "sweep") {
         if (experimentName == "sweep" && experimentConfig.empty()) throw InputError("--config", "", "the sweep needs a config file");
         const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig(sweeps.at(experimentName)) : experimentConfig;
+        if (checkOnly) {
+          experiments::checkSweepConfig(cfg);
+          std::cout << cfg << ": config checked\n";
+          return 0;
+        }
         std::cout << experiments::runSweep(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
         return 0;
       }
@@ -455,7 +506,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*render) {
-      experiments::checkPictureName(out);
+      experiments::checkPictureOutput(out, "--out");
       const auto kv = parseParams(params);
       const planners::PlanningContext ctx = planners::makeContext(makeProblem(map, radius, start, unknownFree, cellSize));
       std::vector<Path> paths;
@@ -477,7 +528,8 @@ int main(int argc, char** argv) {
         pc.cfree = &cfree;
         pc.cobstacles = &cobs;
       }
-      experiments::renderPicture(out, pc);
+      const std::string bytes = experiments::pictureBytes(out, pc);
+      datasets::writeFileAtomically(out, bytes);
       return 0;
     }
   } catch (const InputError& e) {

@@ -93,9 +93,13 @@ std::string histogramSvg(const std::vector<std::string>& titles, const std::vect
 }  // namespace
 
 std::string runBsaExperiment(const BsaExperimentOptions& o, const std::string& outDir) {
-  if (o.seeds < 1) throw InputError("--seeds", std::to_string(o.seeds), "must be at least 1");
-  if (o.size < 2) throw InputError("--size", std::to_string(o.size), "must be at least 2");
-  if (!(o.density >= 0 && o.density < 1)) throw InputError("--density", fmt(o.density, 3), "must be in [0, 1)");
+  if (o.seeds < 1 || o.seeds > kBsaMaxSeeds)
+    throw InputError("--seeds", std::to_string(o.seeds), "must be in 1.." + std::to_string(kBsaMaxSeeds));
+  if (o.size < 2 || o.size > kBsaMaxSize)
+    throw InputError("--size", std::to_string(o.size), "must be in 2.." + std::to_string(kBsaMaxSize) + " (a map of size² cells, planned, validated and measured per seed)");
+  if (!(o.density >= 0 && o.density < 1)) throw InputError("--density", formatDouble(o.density), "must be in [0, 1)");
+  const std::vector<std::string> outputs{"results.csv", "summary.md", "backtracking.svg"};
+  datasets::checkOutputFolder(outDir, "--out", outputs);
   std::ostringstream csv;
   csv << "seed,planner,valid,covered_cells,free_cells,backtracks,backtracking_points,length,turns,travel_moves\n";
   std::map<std::string, std::vector<double>> backtracks, points, lengths, turns;
@@ -138,6 +142,11 @@ std::string runBsaExperiment(const BsaExperimentOptions& o, const std::string& o
       }
       if (2 * reach < free) {
         ++skipped;
+        // a density at which S is walled in on nearly every map would never end
+        if (skipped > 100 + 10 * static_cast<std::size_t>(o.seeds))
+          throw InputError("--density", formatDouble(o.density),
+                           "the start S(0, 0) is walled in (its region under half the free cells) on " + std::to_string(skipped) + " of the first " +
+                               std::to_string(seed) + " seeded maps: use a lower density");
         continue;
       }
     }
@@ -184,10 +193,11 @@ std::string runBsaExperiment(const BsaExperimentOptions& o, const std::string& o
   row("turns", turns, 1);
   md << "\nZigzag needed fewer backtracks than spiral on " << zigzagFewer << " of " << o.seeds << " maps, as many on " << equal << ".\n";
   const std::string svg = histogramSvg({"backtracks per map", "backtracking points recorded per map"}, {backtracks, points});
-  std::filesystem::create_directories(outDir);
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "backtracking.svg").string(), svg);
+  datasets::OutputBatch out(outDir);
+  out.addInFolder(outputs[0], csv.str());
+  out.addInFolder(outputs[1], md.str());
+  out.addInFolder(outputs[2], svg);
+  out.commit();
   return md.str();
 }
 
@@ -207,6 +217,12 @@ std::string runTraccScenarios(const std::string& outDir) {
      << "| scenario | blocked cells | valid | cells entered | length | turns | detours | redundancy | unsafe | never sensed | end | paper |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::vector<std::pair<std::string, std::string>> files;
+  {
+    std::vector<std::string> names{"results.csv", "summary.md"};
+    for (const Scenario& sc : scenarios)
+      for (const char* e : {".grid", ".json", ".svg"}) names.push_back("scenario-" + sc.name + e);
+    datasets::checkOutputFolder(outDir, "--out", names);
+  }
   for (const Scenario& sc : scenarios) {
     std::string text;
     for (int row = 10; row >= 0; --row) {
@@ -234,16 +250,17 @@ std::string runTraccScenarios(const std::string& outDir) {
     doc.planner = "tracc";
     files.emplace_back("scenario-" + sc.name + ".grid", text);
     files.emplace_back("scenario-" + sc.name + ".json", datasets::pathJson(doc));
-    std::filesystem::create_directories(outDir);
     PictureContent pc{&ctx.problem.workspace, &ctx.cells, nullptr, &r.plan.paths, 0.5, "TRACC scenario " + sc.name};
-    renderPicture((std::filesystem::path(outDir) / ("scenario-" + sc.name + ".svg")).string(), pc);
+    const std::string svgName = "scenario-" + sc.name + ".svg";
+    files.emplace_back(svgName, pictureBytes(svgName, pc));
   }
   md << "\nOur agent sweeps every free cell (a disc robot must), where the paper's flow visits every other row and senses the rows "
         "between; its redundancy counts cells sensed twice, ours cells entered twice (docs/grid-rails.md).\n";
-  std::filesystem::create_directories(outDir);
-  for (const auto& [name, content] : files) datasets::writeFileAtomically((std::filesystem::path(outDir) / name).string(), content);
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
+  datasets::OutputBatch out(outDir);
+  for (const auto& [name, content] : files) out.addInFolder(name, content);
+  out.addInFolder("results.csv", csv.str());
+  out.addInFolder("summary.md", md.str());
+  out.commit();
   return md.str();
 }
 
@@ -292,16 +309,88 @@ std::string lineChartSvg(const std::vector<std::string>& titles, const std::stri
   return svg.str();
 }
 
-template <class T>
-T configValue(const YAML::Node& node, const std::string& file, const std::string& key, T fallback) {
-  if (!node[key]) return fallback;
-  try {
-    return node[key].as<T>();
-  } catch (const YAML::Exception&) {
-    throw InputError(file, key, "not a valid value");
+/// "line N: " for a node read from a file, "" otherwise.
+std::string lineOf(const YAML::Node& n) {
+  const YAML::Mark m = n.Mark();
+  return m.is_null() ? std::string() : "line " + std::to_string(m.line + 1) + ": ";
+}
+
+/// What a YAML node is, for messages.
+std::string kindOf(const YAML::Node& n) {
+  switch (n.Type()) {
+    case YAML::NodeType::Null: return "nothing";
+    case YAML::NodeType::Scalar: return "'" + n.Scalar().substr(0, 40) + "'";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Map: return "a mapping";
+    default: return "nothing";
   }
 }
 
+template <class T>
+const char* expectedKind() {
+  if constexpr (std::is_same_v<T, int>) return "an integer";
+  else if constexpr (std::is_same_v<T, double>) return "a number";
+  else if constexpr (std::is_same_v<T, std::string>) return "a text";
+  else return "a list of texts, e.g. [a, b]";
+}
+
+/// The value at `key` of the mapping `node` (`place` is the key as written in messages, e.g.
+/// "worlds.count"), or `fallback` when the key is absent. A wrong type is an InputError naming the
+/// file, the key, the line and what was expected; numbers must be finite.
+template <class T>
+T configValue(const YAML::Node& node, const std::string& file, const std::string& key, T fallback, const std::string& place = "") {
+  const std::string where = place.empty() ? key : place;
+  const YAML::Node& map = node;
+  const YAML::Node v = map[key];  // const access: never adds the key
+  if (!v.IsDefined()) return fallback;
+  const std::string got = kindOf(v);
+  bool ok = false;
+  T out{};
+  if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+    ok = v.IsSequence();
+    for (std::size_t i = 0; ok && i < v.size(); ++i) {
+      if (!v[i].IsScalar()) {
+        throw InputError(file, where + "[" + std::to_string(i) + "]", lineOf(v[i]) + "expected a text, got " + kindOf(v[i]));
+      }
+      out.push_back(v[i].Scalar());
+    }
+  } else {
+    if (v.IsScalar()) {
+      try {
+        out = v.as<T>();
+        ok = true;
+      } catch (const YAML::Exception&) {
+        ok = false;
+      }
+    }
+    if constexpr (std::is_same_v<T, double>)
+      if (ok && !std::isfinite(out)) throw InputError(file, where, lineOf(v) + "must be a finite number, got " + got);
+  }
+  if (!ok) throw InputError(file, where, lineOf(v) + "expected " + expectedKind<T>() + ", got " + got);
+  return out;
+}
+
+/// InputError unless every key of the mapping `node` is one of `known`.
+void checkKeys(const YAML::Node& node, const std::string& file, const std::string& prefix, const std::vector<std::string>& known) {
+  for (const auto& kv : node) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string();
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    if (!kv.first.IsScalar())
+      throw InputError(file, prefix.empty() ? "keys" : prefix.substr(0, prefix.size() - 1),
+                       lineOf(kv.first) + "a key is " + kindOf(kv.first) + ": keys are names (known: " + list + ")");
+    throw InputError(file, prefix + key, lineOf(kv.first) + "unknown key (known: " + list + ")");
+  }
+}
+
+/// An integer value in [lo, hi].
+int configInt(const YAML::Node& node, const std::string& file, const std::string& key, int fallback, int lo, int hi, const std::string& place = "") {
+  const int v = configValue<int>(node, file, key, fallback, place);
+  if (v < lo || v > hi)
+    throw InputError(file, place.empty() ? key : place, lineOf(node[key]) + std::to_string(v) + ": must be in " + std::to_string(lo) + ".." + std::to_string(hi));
+  return v;
+}
 
 /// A planner as a config names it: `name` or `name:key=value;key=value` (parameters), e.g.
 /// `smooth_stc:corners=keep`. The whole text is its label in the CSV and the chart.
@@ -340,7 +429,7 @@ struct ExperimentConfig {
   int count = 0;      ///< worlds: seeds 1 … count
 };
 
-ExperimentConfig loadExperimentConfig(const std::string& configFile, int defaultCount) {
+ExperimentConfig loadExperimentConfig(const std::string& configFile, int defaultCount, const std::vector<std::string>& keys) {
   ExperimentConfig c;
   try {
     c.root = YAML::LoadFile(configFile);
@@ -349,44 +438,111 @@ ExperimentConfig loadExperimentConfig(const std::string& configFile, int default
   } catch (const YAML::Exception& e) {
     throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
   }
-  c.planners = configValue<std::vector<std::string>>(c.root, configFile, "planners", {"stc", "full_stc"});
-  for (const auto& p : c.planners) {
+  std::string keyList;
+  for (const std::string& k : keys) keyList += (keyList.empty() ? "" : ", ") + k;
+  // an empty file or a list is not a config (yaml-cpp would turn a list into a mapping at the first
+  // lookup, and every setting would silently take its default: the whole default experiment)
+  if (c.root.IsNull()) throw InputError(configFile, "", "the config is empty: expected a YAML mapping with the keys " + keyList);
+  if (!c.root.IsMap()) throw InputError(configFile, lineOf(c.root).empty() ? "" : lineOf(c.root).substr(0, lineOf(c.root).size() - 2),
+                                        "expected a YAML mapping with the keys " + keyList + ", got " + kindOf(c.root));
+  checkKeys(c.root, configFile, "", keys);
+  const YAML::Node& root = c.root;
+  c.planners = configValue<std::vector<std::string>>(root, configFile, "planners", {"stc", "full_stc"});
+  if (c.planners.empty()) throw InputError(configFile, "planners", lineOf(root["planners"]) + "the list is empty: name at least one planner");
+  for (std::size_t i = 0; i < c.planners.size(); ++i) {
+    const std::string& p = c.planners[i];
     const PlannerSpec spec = parsePlannerSpec(p, configFile);
     if (p.find(',') != std::string::npos) throw InputError(configFile, "planners", "'" + p + "': no commas in a planner's label");
+    if (std::find(c.planners.begin(), c.planners.begin() + static_cast<long>(i), p) != c.planners.begin() + static_cast<long>(i))
+      throw InputError(configFile, "planners", "'" + p + "' is listed twice");
     try {  // the parameters are checked before anything runs
       planners::ParamSet(planners::Registry::instance().create(spec.name)->params(), spec.params, spec.name);
     } catch (const InputError& e) {
       throw InputError(configFile, "planners", "'" + p + "': " + e.what());
     }
   }
-  const YAML::Node wn = c.root["worlds"];
-  c.count = configValue<int>(wn, configFile, "count", defaultCount);
-  c.worlds.width = configValue<int>(wn, configFile, "width", 20);
-  c.worlds.height = configValue<int>(wn, configFile, "height", 20);
-  c.worlds.count = configValue<int>(wn, configFile, "obstacles", 10);
-  c.worlds.minSize = configValue<double>(wn, configFile, "min_size", 1);
-  c.worlds.maxSize = configValue<double>(wn, configFile, "max_size", 3);
-  c.shape = configValue<std::string>(wn, configFile, "shape", "mixed");
+  const YAML::Node wn = root["worlds"];
+  if (wn.IsDefined()) {
+    if (!wn.IsMap())
+      throw InputError(configFile, "worlds", lineOf(wn) + "expected a mapping (count, width, height, obstacles, shape, min_size, max_size), got " + kindOf(wn));
+    checkKeys(wn, configFile, "worlds.", {"count", "width", "height", "obstacles", "shape", "min_size", "max_size"});
+  }
+  const YAML::Node worlds = wn.IsDefined() ? wn : YAML::Node(YAML::NodeType::Map);  // absent: every default
+  c.count = configInt(worlds, configFile, "count", defaultCount, 1, 10'000, "worlds.count");
+  c.worlds.width = configInt(worlds, configFile, "width", 20, 1, 10'000, "worlds.width");
+  c.worlds.height = configInt(worlds, configFile, "height", 20, 1, 10'000, "worlds.height");
+  c.worlds.count = configInt(worlds, configFile, "obstacles", 10, 0, 10'000, "worlds.obstacles");
+  c.worlds.minSize = configValue<double>(worlds, configFile, "min_size", 1, "worlds.min_size");
+  c.worlds.maxSize = configValue<double>(worlds, configFile, "max_size", 3, "worlds.max_size");
+  if (!(c.worlds.minSize > 0)) throw InputError(configFile, "worlds.min_size", formatDouble(c.worlds.minSize) + ": must be > 0");
+  if (c.worlds.maxSize < c.worlds.minSize)
+    throw InputError(configFile, "worlds.max_size", formatDouble(c.worlds.maxSize) + ": must be at least min_size (" + formatDouble(c.worlds.minSize) + ")");
+  if (c.worlds.maxSize > std::min(c.worlds.width, c.worlds.height))
+    throw InputError(configFile, "worlds.max_size", formatDouble(c.worlds.maxSize) + ": an obstacle must fit the " + std::to_string(c.worlds.width) + "×" +
+                                                        std::to_string(c.worlds.height) + " world");
+  c.shape = configValue<std::string>(worlds, configFile, "shape", "mixed", "worlds.shape");
   if (!datasets::parseObstacleShape(c.shape, c.worlds.shape)) throw InputError(configFile, "worlds.shape", "unknown shape '" + c.shape + "'");
-  if (c.count < 1) throw InputError(configFile, "worlds.count", "must be at least 1");
   return c;
 }
+
+/// The robot of radius `r` must fit the worlds and its sub-cell grid the cell limit: checked on the
+/// worlds' box before anything runs (the generated worlds all have that box).
+void checkRadiusOnWorlds(const Rational& r, const ExperimentConfig& c, const std::string& file, const std::string& key, const std::string& text) {
+  Problem probe;
+  probe.workspace.name = "the " + std::to_string(c.worlds.width) + "×" + std::to_string(c.worlds.height) + " worlds";
+  probe.workspace.regions.push_back({{{0, 0}, {c.worlds.width, 0}, {c.worlds.width, c.worlds.height}, {0, c.worlds.height}}, {}});
+  probe.robots.push_back({r, std::nullopt});
+  try {
+    planners::checkProblem(probe);
+    planners::checkCellGridSize(probe);
+  } catch (const InputError& e) {
+    throw InputError(file, key, text + ": " + e.problem());
+  }
+}
+
+/// Every YAML exception not turned into a precise message above still names the file.
+template <class F>
+auto withConfigErrors(const std::string& file, F&& f) {
+  try {
+    return f();
+  } catch (const YAML::Exception& e) {
+    throw InputError(file, e.mark.is_null() ? "" : "line " + std::to_string(e.mark.line + 1), "bad value: " + e.msg);
+  }
+}
+
+// checkOnly: read and check the config, then return "" (nothing run, nothing written)
+std::string runSweepConfig(const std::string& configFile, const std::string& outDir, bool checkOnly);
+std::string runCoverageVsTimeConfig(const std::string& configFile, const std::string& outDir, bool checkOnly);
+
 }  // namespace
 
 std::string defaultConfig(const std::string& name) { return (std::filesystem::path(COVERKIT_CONFIG_DIR) / name).string(); }
 
 std::string runSweep(const std::string& configFile, const std::string& outDir) {
-  const ExperimentConfig ec = loadExperimentConfig(configFile, 10);
+  return withConfigErrors(configFile, [&] { return runSweepConfig(configFile, outDir, false); });
+}
+void checkSweepConfig(const std::string& configFile) {
+  withConfigErrors(configFile, [&] { return runSweepConfig(configFile, "", true); });
+}
+
+namespace {
+std::string runSweepConfig(const std::string& configFile, const std::string& outDir, bool checkOnly) {
+  const ExperimentConfig ec = loadExperimentConfig(configFile, 10, {"title", "planners", "vary", "radii", "values", "radius", "worlds"});
   const YAML::Node& cfg = ec.root;
   const std::vector<std::string>& plannerNames = ec.planners;
   const std::string title = configValue<std::string>(cfg, configFile, "title", "Coverage and overlap against robot size");
   const std::string vary = configValue<std::string>(cfg, configFile, "vary", "radius");
   if (vary != "radius" && vary != "obstacles" && vary != "shape") throw InputError(configFile, "vary", vary + ": must be radius, obstacles or shape");
+  const std::string valuesKey = vary == "radius" ? "radii" : "values", otherKey = vary == "radius" ? "values" : "radii";
+  if (cfg[otherKey].IsDefined())
+    throw InputError(configFile, otherKey, lineOf(cfg[otherKey]) + "not used with vary: " + vary + " (the values varied are '" + valuesKey + "')");
+  if (vary == "radius" && cfg["radius"].IsDefined())
+    throw InputError(configFile, "radius", lineOf(cfg["radius"]) + "not used with vary: radius (the radii varied are 'radii')");
   const std::vector<std::string> defaults = vary == "radius" ? std::vector<std::string>{"0.15", "0.2", "0.25", "0.3", "0.4", "0.5"}
                                             : vary == "obstacles" ? std::vector<std::string>{"2", "5", "10", "15", "20", "25"}
                                                                   : std::vector<std::string>{"rectangles", "rotated", "convex", "nonconvex", "stars", "discs"};
-  const auto values = configValue<std::vector<std::string>>(cfg, configFile, vary == "radius" ? "radii" : "values", defaults);
-  if (values.empty()) throw InputError(configFile, vary == "radius" ? "radii" : "values", "must not be empty");
+  const auto values = configValue<std::vector<std::string>>(cfg, configFile, valuesKey, defaults);
+  if (values.empty()) throw InputError(configFile, valuesKey, lineOf(cfg[valuesKey]) + "the list is empty: give at least one value");
   const std::string fixedRadius = configValue<std::string>(cfg, configFile, "radius", "0.25");
   const datasets::PolygonWorldSpec& base = ec.worlds;
   const std::string& baseShape = ec.shape;
@@ -398,8 +554,10 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
   };
   std::vector<Setting> settings;
   for (const std::string& v : values) {
-    Setting st{parseRational(vary == "radius" ? v : fixedRadius, configFile + ": radius", vary == "radius" ? v : fixedRadius), base};
-    if (st.radius <= 0) throw InputError(configFile, vary == "radius" ? "radii" : "radius", (vary == "radius" ? v : fixedRadius) + ": must be > 0");
+    const std::string rKey = vary == "radius" ? "radii" : "radius", rText = vary == "radius" ? v : fixedRadius;
+    Setting st{parseRational(rText, configFile + ": " + rKey, rText), base};
+    if (st.radius <= 0) throw InputError(configFile, rKey, rText + ": must be > 0");
+    checkRadiusOnWorlds(st.radius, ec, configFile, rKey, rText);
     if (vary == "obstacles") {
       char* end = nullptr;
       const long c = std::strtol(v.c_str(), &end, 10);
@@ -409,6 +567,8 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
     if (vary == "shape" && !datasets::parseObstacleShape(v, st.spec.shape)) throw InputError(configFile, "values", "unknown shape '" + v + "'");
     settings.push_back(st);
   }
+  if (checkOnly) return "";
+  datasets::checkOutputFolder(outDir, "--out", {"results.csv", "summary.md", "chart.svg"});
 
   std::ostringstream csv;
   csv << "world," << vary << ",planner,radius,status,valid,coverable_coverage,area_coverage,subcell_coverage,swept_area_overlap,revisited_subcells,"
@@ -496,14 +656,14 @@ std::string runSweep(const std::string& configFile, const std::string& outDir) {
   const std::string xLabel = vary == "radius" ? "robot radius r" : vary == "obstacles" ? "obstacles per world" : "obstacle shape (see summary)";
   const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns", "mean total turning angle (°)"},
                                        xLabel, {coverageSeries, overlapSeries, turnSeries, angleSeries});
-  std::filesystem::create_directories(outDir);
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "chart.svg").string(), svg);
+  datasets::OutputBatch out(outDir);
+  out.addInFolder("results.csv", csv.str());
+  out.addInFolder("summary.md", md.str());
+  out.addInFolder("chart.svg", svg);
+  out.commit();
   return md.str();
 }
 
-namespace {
 /// The first `length` of a path made of lines (arcs through their polyline), as a path.
 Path prefix(const Path& path, double length) {
   Path out;
@@ -519,19 +679,21 @@ Path prefix(const Path& path, double length) {
   }
   return out;
 }
-}  // namespace
 
-std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir) {
-  const ExperimentConfig ec = loadExperimentConfig(configFile, 5);
+std::string runCoverageVsTimeConfig(const std::string& configFile, const std::string& outDir, bool checkOnly) {
+  const ExperimentConfig ec = loadExperimentConfig(configFile, 5, {"planners", "radius", "speed", "steps", "worlds"});
   const YAML::Node& cfg = ec.root;
   const std::vector<std::string>& plannerNames = ec.planners;
   const std::string rText = configValue<std::string>(cfg, configFile, "radius", "0.25");
   const Rational r = parseRational(rText, configFile + ": radius", rText);
   if (r <= 0) throw InputError(configFile, "radius", rText + ": must be > 0");
+  checkRadiusOnWorlds(r, ec, configFile, "radius", rText);
   const double speed = configValue<double>(cfg, configFile, "speed", 0.2);
-  const int steps = configValue<int>(cfg, configFile, "steps", 12);
   if (!(speed > 0)) throw InputError(configFile, "speed", "must be > 0");
-  if (steps < 1 || steps > 1000) throw InputError(configFile, "steps", "must be in 1..1000");
+  const int steps = configValue<int>(cfg, configFile, "steps", 12);
+  if (steps < 1 || steps > 1000) throw InputError(configFile, "steps", std::to_string(steps) + ": must be in 1..1000");
+  if (checkOnly) return "";
+  datasets::checkOutputFolder(outDir, "--out", {"results.csv", "summary.md", "chart.svg"});
   datasets::PolygonWorldSpec spec = ec.worlds;
   const std::string& shape = ec.shape;
   const int count = ec.count;
@@ -604,11 +766,20 @@ std::string runCoverageVsTime(const std::string& configFile, const std::string& 
     for (int k = 0; k <= steps; ++k) chart[p].emplace_back(100.0 * k / steps, meanByStep[p][static_cast<std::size_t>(k)]);
   }
   const std::string svg = lineChartSvg({"mean coverage of the coverable region"}, "time, % of the slowest planner's", {chart});
-  std::filesystem::create_directories(outDir);
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "results.csv").string(), csv.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "summary.md").string(), md.str());
-  datasets::writeFileAtomically((std::filesystem::path(outDir) / "chart.svg").string(), svg);
+  datasets::OutputBatch out(outDir);
+  out.addInFolder("results.csv", csv.str());
+  out.addInFolder("summary.md", md.str());
+  out.addInFolder("chart.svg", svg);
+  out.commit();
   return md.str();
+}
+}  // namespace
+
+std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir) {
+  return withConfigErrors(configFile, [&] { return runCoverageVsTimeConfig(configFile, outDir, false); });
+}
+void checkCoverageVsTimeConfig(const std::string& configFile) {
+  withConfigErrors(configFile, [&] { return runCoverageVsTimeConfig(configFile, "", true); });
 }
 
 }  // namespace coverkit::experiments

@@ -8,6 +8,9 @@ namespace coverkit::experiments {
 /// BSA paper, section 3: 30×30 grid maps with random obstacles, start S(0, 0), spiral against
 /// zigzag filling, over many seeds. Writes OUT/results.csv (one row per seed and filling),
 /// OUT/summary.md (the table) and OUT/backtracking.svg (the distributions). Returns the summary.
+/// The largest --seeds and --size accepted (a size² map is planned, validated and measured per seed).
+constexpr int kBsaMaxSeeds = 100'000;
+constexpr int kBsaMaxSize = 1'000;
 struct BsaExperimentOptions {
   int seeds = 100;
   int size = 30;
@@ -34,6 +37,11 @@ std::string runSweep(const std::string& configFile, const std::string& outDir);
 /// the covered area of each path's prefix at common times (rasterised with its bound; the full path
 /// exact). Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg.
 std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir);
+
+/// Read and check a config exactly as runSweep / runCoverageVsTime do (the same InputErrors), then
+/// stop: nothing is run or written. For fuzzing the config reader and for tests.
+void checkSweepConfig(const std::string& configFile);
+void checkCoverageVsTimeConfig(const std::string& configFile);
 
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);

@@ -18,23 +18,39 @@ std::string extOf(const std::string& f) {
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return e;
 }
+
+cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
 }  // namespace
 
-void checkPictureName(const std::string& file) {
+void checkPictureName(const std::string& file, const std::string& option) {
   const std::string e = extOf(file);
-  if (e != ".png" && e != ".svg") throw InputError(file, "--picture", "unknown picture format '" + e + "' (expected .png or .svg)");
+  if (e != ".png" && e != ".svg") throw InputError(file, option, "unknown picture format '" + e + "' (expected .png or .svg)");
 }
 
-void renderPicture(const std::string& file, const PictureContent& c) {
+void checkPictureOutput(const std::string& file, const std::string& option) {
+  checkPictureName(file, option);
+  datasets::checkOutputFile(file, option, {".png", ".svg"});
+}
+
+void renderPicture(const std::string& file, const PictureContent& c) { datasets::writeFileAtomically(file, pictureBytes(file, c)); }
+
+std::string pictureBytes(const std::string& file, const PictureContent& c) {
   checkPictureName(file);
   const Box b = c.workspace->bbox();
   const double x0 = b.xmin.get_d(), y0 = b.ymin.get_d(), w = b.xmax.get_d() - x0, h = b.ymax.get_d() - y0;
+  if (!(std::isfinite(x0) && std::isfinite(y0) && std::isfinite(w) && std::isfinite(h) && w > 0 && h > 0))
+    throw InputError(c.workspace->name, "coordinates", "the extent [" + b.xmin.get_str().substr(0, 30) + ", " + b.xmax.get_str().substr(0, 30) + "] × [" +
+                                                          b.ymin.get_str().substr(0, 30) + ", " + b.ymax.get_str().substr(0, 30) +
+                                                          "] does not fit a double: the picture " + file + " cannot be drawn");
   const double scale = 1000.0 / std::max(w, h);
   const int margin = 10, titleH = c.title.empty() ? 0 : 22;
   const int W = static_cast<int>(std::ceil(w * scale)) + 2 * margin, H = static_cast<int>(std::ceil(h * scale)) + 2 * margin + titleH;
-  const std::string tmp = file + ".tmp-coverkit";
+  std::string bytes;
   const bool svg = extOf(file) == ".svg";
-  cairo_surface_t* surface = svg ? cairo_svg_surface_create(tmp.c_str(), W, H) : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
+  cairo_surface_t* surface = svg ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, W, H) : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
@@ -164,20 +180,12 @@ void renderPicture(const std::string& file, const PictureContent& c) {
   }
   cairo_destroy(cr);
   cairo_status_t st = CAIRO_STATUS_SUCCESS;
-  if (!svg) st = cairo_surface_write_to_png(surface, tmp.c_str());
+  if (!svg) st = cairo_surface_write_to_png_stream(surface, appendBytes, &bytes);
   cairo_surface_finish(surface);
   if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
-  std::error_code ec;
-  if (st != CAIRO_STATUS_SUCCESS) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(file, "", std::string("cannot write picture: ") + cairo_status_to_string(st));
-  }
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(file, "", "cannot write picture: " + ec.message());
-  }
+  if (st != CAIRO_STATUS_SUCCESS) throw InputError(file, "", std::string("the picture cannot be drawn: ") + cairo_status_to_string(st));
+  return bytes;
 }
 
 }  // namespace coverkit::experiments

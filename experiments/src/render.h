@@ -20,9 +20,14 @@ struct PictureContent {
   const std::vector<CurveRegion>* cobstacles = nullptr;    ///< optional: C-obstacles
 };
 
-/// Throws InputError for an unknown extension (checked before anything is written).
-void checkPictureName(const std::string& file);
-/// Writes the picture atomically.
+/// Throws InputError(file, option, ...) for an unknown extension.
+void checkPictureName(const std::string& file, const std::string& option = "--picture");
+/// Before any work: the extension is known and the file can be written (datasets::checkOutputFile).
+void checkPictureOutput(const std::string& file, const std::string& option = "--picture");
+/// The picture's bytes (PNG or SVG by the extension of `file`), drawn in memory; InputError when it
+/// cannot be drawn (e.g. coordinates beyond the range of a double).
+std::string pictureBytes(const std::string& file, const PictureContent& content);
+/// Draws the picture and writes it atomically.
 void renderPicture(const std::string& file, const PictureContent& content);
 
 }  // namespace coverkit::experiments

@@ -99,9 +99,16 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
   if (D <= 0) throw InputError(w.name, "cell size", "must be > 0");
   if (w.regions.empty()) throw InputError(w.name, "workspace", "has no free region");
   const Box b = w.bbox();
-  const long mcols = std::max(1L, ceilQ(Rational((b.xmax - b.xmin) / (2 * D))));
-  const long mrows = std::max(1L, ceilQ(Rational((b.ymax - b.ymin) / (2 * D))));
-  if (mcols * mrows > 50'000'000L) throw InputError(w.name, "cell size", "too small: more than 2·10^8 sub-cells");
+  // counted exactly before converting: a tiny D must not overflow a long into a small grid
+  auto megaCount = [&](const Rational& extent) {
+    const Rational q = extent / (2 * D);
+    mpz_class c;
+    mpz_cdiv_q(c.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+    return c < 1 ? mpz_class(1) : c;
+  };
+  const mpz_class mc = megaCount(b.xmax - b.xmin), mr = megaCount(b.ymax - b.ymin);
+  if (mc * mr > 50'000'000L) throw InputError(w.name, "cell size", "too small: more than 2·10^8 sub-cells");
+  const long mcols = mc.get_si(), mrows = mr.get_si();
   CellGrid g(b.xmin, b.ymin, D, static_cast<int>(mcols), static_cast<int>(mrows));
   const int cols = g.subCols(), rows = g.subRows();
   const Rational& x0 = b.xmin;

@@ -62,11 +62,22 @@ public:
 private:
   template <class F>
   void forBuckets(double xmin, double ymin, double xmax, double ymax, F&& f) {
-    auto cx = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - x0_) / cw_)), 0, nx_ - 1); };
-    auto cy = [&](double y) { return std::clamp(static_cast<int>(std::floor((y - y0_) / ch_)), 0, ny_ - 1); };
-    const int i0 = cx(xmin), i1 = cx(xmax), j0 = cy(ymin), j1 = cy(ymax);
+    // NaN bounds (never produced by the callers, which test finiteness first) select the whole range
+    const int i0 = std::isnan(xmin) ? 0 : bucketOf((xmin - x0_) / cw_, nx_);
+    const int i1 = std::isnan(xmax) ? nx_ - 1 : bucketOf((xmax - x0_) / cw_, nx_);
+    const int j0 = std::isnan(ymin) ? 0 : bucketOf((ymin - y0_) / ch_, ny_);
+    const int j1 = std::isnan(ymax) ? ny_ - 1 : bucketOf((ymax - y0_) / ch_, ny_);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) f(buckets_[static_cast<std::size_t>(j) * nx_ + i]);
+  }
+
+  /// The bucket of a coordinate t (in bucket units), clamped to [0, n - 1] BEFORE the conversion
+  /// to int: a query box far outside the workspace (x = 7.2e9, an arc of radius 1e160, an infinity)
+  /// must select the border buckets, never wrap past INT_MAX.
+  static int bucketOf(double t, int n) {
+    if (!(t > 0)) return 0;
+    if (t >= n - 1) return n - 1;
+    return static_cast<int>(t);
   }
 
   std::vector<IndexedEdge> edges_;

@@ -44,10 +44,11 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   // flattened to within D/1000); an entry is a change of cell.
   std::vector<std::uint32_t> visits(cells.subCount(), 0);
   std::size_t pieces = 0;
+  const Box wb = problem.workspace.bbox();
+  const BoxD sampleBox{wb.xmin.get_d() - D, wb.ymin.get_d() - D, wb.xmax.get_d() + D, wb.ymax.get_d() + D};
   for (const Path& p : paths) {
     pieces += p.segments.size();
     m.length += p.length();
-    const std::vector<PointD> pts = p.polyline(D / 1000);
     long last = -1;
     auto enter = [&](PointD q) {
       CellIndex c;
@@ -56,13 +57,17 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
       if (k != last) ++visits[static_cast<std::size_t>(k)];
       last = k;
     };
-    enter(pts.front());
-    for (std::size_t i = 1; i < pts.size(); ++i) {
-      const double len = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-      const int n = std::max(1, static_cast<int>(std::ceil(len / (D / 32))));
-      for (int k = 1; k <= n; ++k) {
-        const double t = static_cast<double>(k) / n;
-        enter({pts[i - 1].x + t * (pts[i].x - pts[i - 1].x), pts[i - 1].y + t * (pts[i].y - pts[i - 1].y)});
+    // only what lies within D of the workspace can enter a sub-cell: sampling is bounded by that part
+    for (const std::vector<PointD>& pts : p.polylineWithin(D / 1000, sampleBox)) {
+      last = -1;
+      enter(pts.front());
+      for (std::size_t i = 1; i < pts.size(); ++i) {
+        const double len = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+        const long n = std::max(1L, static_cast<long>(std::ceil(len / (D / 32))));
+        for (long k = 1; k <= n; ++k) {
+          const double t = static_cast<double>(k) / static_cast<double>(n);
+          enter({pts[i - 1].x + t * (pts[i].x - pts[i - 1].x), pts[i - 1].y + t * (pts[i].y - pts[i - 1].y)});
+        }
       }
     }
     // turns at joints and turning along arcs
@@ -145,22 +150,24 @@ namespace {
 /// Bucket grid over the path's straight pieces (arcs flattened), for distance queries.
 class PieceGrid {
 public:
+  /// Only the parts of the paths inside [x0, x1] × [y0, y1] (the workspace grown by r) are kept:
+  /// nothing outside can cover a point of the workspace.
   PieceGrid(const std::vector<Path>& paths, double flatten, double cell, double x0, double y0, double x1, double y1)
       : x0_(x0), y0_(y0), cell_(cell) {
     nx_ = std::max(1, static_cast<int>(std::ceil((x1 - x0) / cell)) + 1);
     ny_ = std::max(1, static_cast<int>(std::ceil((y1 - y0) / cell)) + 1);
     buckets_.assign(static_cast<std::size_t>(nx_) * ny_, {});
-    for (const Path& p : paths) {
-      const std::vector<PointD> pts = p.polyline(flatten);
-      // consecutive points as pieces; a path without segments is its start point alone
-      for (std::size_t i = 0; i == 0 || i + 1 < pts.size(); ++i) {
-        const PointD a = pts[i], b = pts[std::min(i + 1, pts.size() - 1)];
-        const std::size_t k = pieces_.size();
-        pieces_.push_back({a.x, a.y, b.x, b.y});
-        for (int j = by(std::min(a.y, b.y)); j <= by(std::max(a.y, b.y)); ++j)
-          for (int q = bx(std::min(a.x, b.x)); q <= bx(std::max(a.x, b.x)); ++q) buckets_[static_cast<std::size_t>(j) * nx_ + q].push_back(k);
+    for (const Path& p : paths)
+      for (const std::vector<PointD>& pts : p.polylineWithin(flatten, BoxD{x0, y0, x1, y1})) {
+        // consecutive points as pieces; a run of one point is that point alone
+        for (std::size_t i = 0; i == 0 || i + 1 < pts.size(); ++i) {
+          const PointD a = pts[i], b = pts[std::min(i + 1, pts.size() - 1)];
+          const std::size_t k = pieces_.size();
+          pieces_.push_back({a.x, a.y, b.x, b.y});
+          for (int j = by(std::min(a.y, b.y)); j <= by(std::max(a.y, b.y)); ++j)
+            for (int q = bx(std::min(a.x, b.x)); q <= bx(std::max(a.x, b.x)); ++q) buckets_[static_cast<std::size_t>(j) * nx_ + q].push_back(k);
+        }
       }
-    }
   }
   /// Distance from (x, y) to the path, or a value above `limit` when it is farther than `limit`.
   double distance(double x, double y, double limit) const {
@@ -175,8 +182,9 @@ public:
   }
 
 private:
-  int bx(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0_) / cell_)), 0, nx_ - 1); }
-  int by(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0_) / cell_)), 0, ny_ - 1); }
+  static int clampIndex(double t, int n) { return !(t > 0) ? 0 : t >= n - 1 ? n - 1 : static_cast<int>(t); }
+  int bx(double x) const { return clampIndex((x - x0_) / cell_, nx_); }
+  int by(double y) const { return clampIndex((y - y0_) / cell_, ny_); }
   double x0_, y0_, cell_;
   int nx_ = 1, ny_ = 1;
   std::vector<std::array<double, 4>> pieces_;

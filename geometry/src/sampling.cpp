@@ -23,12 +23,7 @@ bool arcGeom(const PathSegment& s, ArcGeom& g) {
   g.rho = std::hypot(s.from.x - g.cx, s.from.y - g.cy);
   if (!(g.rho > 0) || !std::isfinite(g.rho) || (s.to.x == g.cx && s.to.y == g.cy)) return false;
   g.a0 = std::atan2(s.from.y - g.cy, s.from.x - g.cx);
-  const double a1 = std::atan2(s.to.y - g.cy, s.to.x - g.cx);
-  double d = s.ccw ? a1 - g.a0 : g.a0 - a1;
-  while (d < 0) d += 2 * M_PI;
-  while (d >= 2 * M_PI) d -= 2 * M_PI;
-  if (s.from.x == s.to.x && s.from.y == s.to.y) d = 2 * M_PI;
-  g.sweep = d;
+  g.sweep = std::min(2 * M_PI, s.length() / g.rho);  // the validator's angle (exact products, from == to: 2π)
   g.dir = s.ccw ? 1 : -1;
   return true;
 }

@@ -101,14 +101,61 @@ const char* toString(PlanStatus s) {
 }
 
 namespace {
+/// The angle swept by an arc, in [0, 2π]: from == to is a full circle (as the validator and
+/// docs/formats.md read it). The angle between u = from − c and v = to − c is taken from the exact
+/// cross and dot products (the doubles are exact rationals), so that an arc whose ends differ by
+/// less than a double's angle resolution (a near-full circle of radius 1e154) is 2π − tiny, not 0,
+/// and nothing overflows for coordinates up to the largest double.
 double arcSweep(const PathSegment& s) {
-  double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x);
-  double a1 = std::atan2(s.to.y - s.center.y, s.to.x - s.center.x);
-  double d = s.ccw ? a1 - a0 : a0 - a1;
-  while (d < 0) d += 2 * M_PI;
-  if (d == 0 && (s.from.x != s.to.x || s.from.y != s.to.y)) d = 0;
-  return d;
+  if (s.from.x == s.to.x && s.from.y == s.to.y) return 2 * M_PI;
+  const Rational cx = exactFromDouble(s.center.x), cy = exactFromDouble(s.center.y);
+  const Rational ux = exactFromDouble(s.from.x) - cx, uy = exactFromDouble(s.from.y) - cy;
+  const Rational vx = exactFromDouble(s.to.x) - cx, vy = exactFromDouble(s.to.y) - cy;
+  const Rational cr = ux * vy - uy * vx, dt = ux * vx + uy * vy;
+  // the signed angle θ ∈ (−π, π] from u to v: atan of the exact ratio, by quadrant; a tiny θ of
+  // either sign stays exact to a double's precision (never 2π − tiny rounded to 2π, then to 0)
+  double th;
+  if (sgn(cr) == 0) th = sgn(dt) >= 0 ? 0 : M_PI;
+  else if (sgn(dt) == 0) th = sgn(cr) > 0 ? M_PI / 2 : -M_PI / 2;
+  else {
+    const double t = std::atan(std::abs(Rational(cr / dt).get_d()));  // in (0, π/2)
+    const double mag = sgn(dt) > 0 ? t : M_PI - t;
+    th = sgn(cr) > 0 ? mag : -mag;
+  }
+  if (s.ccw) return th >= 0 ? th : 2 * M_PI + th;
+  return th <= 0 ? -th : 2 * M_PI - th;
 }
+
+/// The part of segment ab inside the box (Liang–Barsky): [t0, t1] ⊆ [0, 1], and its end points.
+/// An end on a side of the box is computed from that side (x = side, y on the line through a and b)
+/// rather than from t, so that a segment from −1e300 to 1e300 is clipped to the box's own sides.
+bool clipLine(PointD a, PointD b, const BoxD& box, double& t0, double& t1, PointD& p0, PointD& p1) {
+  t0 = 0;
+  t1 = 1;
+  int s0 = -1, s1 = -1;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - box.xmin, box.xmax - a.x, a.y - box.ymin, box.ymax - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0 && t > t0) { t0 = t; s0 = i; }
+    if (p[i] > 0 && t < t1) { t1 = t; s1 = i; }
+  }
+  if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1)) return false;
+  const double side[4] = {box.xmin, box.xmax, box.ymin, box.ymax};
+  auto onSide = [&](int i, double t) -> PointD {
+    if (i < 0) return t == 0 ? a : b;
+    if (i < 2) return {side[i], std::clamp(a.y + (side[i] - a.x) * (dy / dx), box.ymin, box.ymax)};
+    return {std::clamp(a.x + (side[i] - a.y) * (dx / dy), box.xmin, box.xmax), side[i]};
+  };
+  p0 = onSide(s0, 0);
+  p1 = onSide(s1, 1);
+  return true;
+}
+bool inBox(PointD p, const BoxD& b) { return p.x >= b.xmin && p.x <= b.xmax && p.y >= b.ymin && p.y <= b.ymax; }
 }  // namespace
 
 double PathSegment::length() const {
@@ -149,6 +196,77 @@ std::vector<PointD> Path::polyline(double tolerance) const {
     pts.push_back(s.to);
   }
   return pts;
+}
+
+std::vector<std::vector<PointD>> Path::polylineWithin(double tolerance, const BoxD& box) const {
+  std::vector<std::vector<PointD>> runs;
+  std::vector<PointD> run;
+  auto close = [&] {
+    if (!run.empty()) runs.push_back(std::move(run));
+    run.clear();
+  };
+  auto add = [&](PointD p) {
+    if (run.empty() || run.back().x != p.x || run.back().y != p.y) run.push_back(p);
+  };
+  if (segments.empty()) {
+    if (inBox(start, box)) runs.push_back({start});
+    return runs;
+  }
+  for (const auto& s : segments) {
+    if (s.kind == PathSegment::Kind::kLine) {
+      double t0, t1;
+      PointD p0, p1;
+      if (!clipLine(s.from, s.to, box, t0, t1, p0, p1)) {
+        close();
+        continue;
+      }
+      if (t0 > 0) close();
+      add(p0);
+      add(p1);
+      if (t1 < 1) close();
+      continue;
+    }
+    // an arc: the angular intervals of its circle inside the box, sampled with chord error ≤ tolerance
+    const double rad = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
+    const double sweep = arcSweep(s), dir = s.ccw ? 1 : -1;
+    const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x);
+    if (!(rad > 0) || !std::isfinite(rad)) {
+      close();
+      continue;
+    }
+    std::vector<double> cuts{0, sweep};  // parameters u ∈ [0, sweep]: angle a0 + dir·u
+    auto cutAt = [&](double angle) {
+      double u = dir * (angle - a0);
+      u = std::fmod(u, 2 * M_PI);
+      if (u < 0) u += 2 * M_PI;
+      if (u > 0 && u < sweep) cuts.push_back(u);
+    };
+    for (double x : {box.xmin, box.xmax}) {
+      const double c = (x - s.center.x) / rad;
+      if (c >= -1 && c <= 1) { cutAt(std::acos(c)); cutAt(-std::acos(c)); }
+    }
+    for (double y : {box.ymin, box.ymax}) {
+      const double c = (y - s.center.y) / rad;
+      if (c >= -1 && c <= 1) { cutAt(std::asin(c)); cutAt(M_PI - std::asin(c)); }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    const double h = rad > tolerance ? 2 * std::acos(1 - tolerance / rad) : 2 * M_PI;
+    auto at = [&](double u) { return PointD{s.center.x + rad * std::cos(a0 + dir * u), s.center.y + rad * std::sin(a0 + dir * u)}; };
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const double u0 = cuts[i], u1 = cuts[i + 1];
+      if (!inBox(at((u0 + u1) / 2), box)) {
+        close();
+        continue;
+      }
+      const long n = std::max(1L, static_cast<long>(std::ceil((u1 - u0) / std::max(h, 1e-9))));
+      add(u0 == 0 ? s.from : at(u0));
+      for (long k = 1; k < n; ++k) add(at(u0 + (u1 - u0) * static_cast<double>(k) / static_cast<double>(n)));
+      add(u1 == sweep ? s.to : at(u1));
+    }
+    if (!inBox(s.to, box)) close();
+  }
+  close();
+  return runs;
 }
 
 }  // namespace coverkit

@@ -1,6 +1,7 @@
 // The independent validator. Exact: line pieces with CGAL's Cartesian kernel over GMP rationals
 // (squared distances are rational), arcs with CORE::Expr (exact square roots). Doubles are used
-// only to skip edges that are certainly far away (margin far above double rounding). Between the
+// only to skip edges that are certainly far away (margin far above double rounding at the piece's
+// own magnitude; beyond 1e150 no double filter at all). Between the
 // two sits a filter, as in CGAL's filtered kernels: the same distance is bounded from below with
 // interval arithmetic (CGAL::Interval_nt, directed rounding, inputs enclosed by to_interval); an
 // edge whose lower bound is certainly ≥ r is clear, and only the others are decided exactly. Where
@@ -20,6 +21,8 @@
 #include <coverkit/geometry/cspace.h>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace coverkit {
@@ -54,6 +57,34 @@ Expr pointSegDistance(const ExprPoint& p, const ExprPoint& a, const ExprPoint& b
   if (t <= 0) return dist(p, a);
   if (t >= 1) return dist(p, b);
   return abs(cross(ab, ap)) / sqrt(l2);
+}
+/// Whether segments ab and cd come closer than R: they cross, or an end is closer than R to the
+/// other segment. Each candidate is compared with R on its own: comparing two candidates with each
+/// other (a min) can compare equal expressions, which CORE decides only at its root-bound precision
+/// (seconds for coordinates near 1e150), while a comparison with R is decided as soon as it differs.
+bool segSegBelow(const ExprPoint& a, const ExprPoint& b, const ExprPoint& c, const ExprPoint& d, const Expr& R, Expr& found) {
+  const int o1 = CGAL::sign(cross(sub(b, a), sub(c, a))), o2 = CGAL::sign(cross(sub(b, a), sub(d, a)));
+  const int o3 = CGAL::sign(cross(sub(d, c), sub(a, c))), o4 = CGAL::sign(cross(sub(d, c), sub(b, c)));
+  if (o1 * o2 < 0 && o3 * o4 < 0) {
+    found = Expr(0);
+    return true;
+  }
+  for (const Expr& e : {pointSegDistance(a, c, d), pointSegDistance(b, c, d), pointSegDistance(c, a, b), pointSegDistance(d, a, b)})
+    if (e < R) {
+      found = e;
+      return true;
+    }
+  return false;
+}
+
+/// Beyond this magnitude the double pre-filters (squares of coordinate differences) could overflow
+/// and the interval filter's bounds would be infinite: such pieces (an arc about a centre at 1e160,
+/// a segment to x = 1e200) skip both filters and are decided by the exact tests alone.
+constexpr double kFilterRange = 1e150;
+bool filterable(std::initializer_list<double> values) {
+  for (double v : values)
+    if (!(std::abs(v) <= kFilterRange)) return false;
+  return true;
 }
 
 // --- the interval filter: lower bounds of the distances the exact code computes -----------------
@@ -122,7 +153,7 @@ public:
       }
     }
     I best = imin(imin(lbPointSeg(F_, P, Q), lbPointSeg(Tp_, P, Q)),
-                  imin(imin(pointArc(P), pointArc(Q)), lbPointSeg(T_, P, Q)));
+                  imin(imin(pointArc(P), pointArc(Q)), lbSegSeg(Tp_, T_, P, Q)));
     const I s = -idot(pc, d) / qa;
     const IPoint v = isub({P.x + s * d.x, P.y + s * d.y}, C_);
     const I hd = inorm(v);
@@ -168,7 +199,9 @@ public:
       if (!strictlyInside(w_, a)) return "starts outside the workspace or on its boundary";
     }
     const double ax = a.x.get_d(), ay = a.y.get_d(), bx = b.x.get_d(), by = b.y.get_d();
-    const double m = rd_ + 1e-7 * scale_;
+    // the margin covers double rounding at the piece's own magnitude too (a far end at 1e20)
+    const double m = rd_ + 1e-7 * scale_ + 1e-12 * std::max({std::abs(ax), std::abs(ay), std::abs(bx), std::abs(by)});
+    const bool filter = filterable({ax, ay, bx, by});
     std::string bad;
     KS s(kp(a), kp(b));
     const IPoint A = ip(a), B = ip(b);
@@ -176,8 +209,8 @@ public:
     index_.query(std::min(ax, bx) - m, std::min(ay, by) - m, std::max(ax, bx) + m, std::max(ay, by) + m,
                  [&](const detail::IndexedEdge& e) {
                    if (!bad.empty()) return;
-                   if (detail::segSegDist(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m) return;
-                   if (filtered_ && CGAL::certainly(lbSegSeg(A, B, ip(*e.a), ip(*e.b)) >= R)) return;
+                   if (filter && detail::segSegDist(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m) return;
+                   if (filter && filtered_ && CGAL::certainly(lbSegSeg(A, B, ip(*e.a), ip(*e.b)) >= R)) return;
                    ++exactTests;
                    KS es(kp(*e.a), kp(*e.b));
                    const mpq_class d2 = (a == b) ? CGAL::squared_distance(kp(a), es) : CGAL::squared_distance(s, es);
@@ -191,7 +224,8 @@ public:
     return bad;
   }
 
-  /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the jump to t.
+  /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the straight jump
+  /// from where the arc meets that ray to t (t lies on the circle only within a relative 1e-9).
   std::string arc(const Point& f, const Point& t, const Point& c, bool ccw) {
     if (!insideChecked_) {
       insideChecked_ = true;
@@ -218,24 +252,42 @@ public:
       if (dot(A, B) > 0) return cross(A, v) == 0 && dot(A, v) > 0;  // zero sweep
       return cross(A, v) >= 0;                                       // half circle
     };
-    const double cx = c.x.get_d(), cy = c.y.get_d(), rr = std::sqrt(rho2.get_d());
-    const double m = rd_ + 1e-7 * scale_;
+    const double cx = c.x.get_d(), cy = c.y.get_d();
+    const bool filter = filterable({cx, cy, f.x.get_d(), f.y.get_d(), t.x.get_d(), t.y.get_d()});
+    // rr and the margin are finite when filtering; otherwise every edge is tested exactly. The
+    // margin covers the jump too: t is within |√t2 − ρ| of the circle.
+    const double rr = filter ? std::sqrt(rho2.get_d()) : std::numeric_limits<double>::infinity();
+    // and double rounding at the circle's magnitude (hypot of differences near 1e20 is off by ~1e4)
+    const double m = filter ? rd_ + 1e-7 * scale_ + std::abs(std::sqrt(t2.get_d()) - rr) +
+                                  1e-12 * (rr + std::abs(cx) + std::abs(cy))
+                            : 0;
     const Expr R = ex(r_);
-    const ArcFilter filter(f, t, c, rho2, ccw);
+    std::optional<ArcFilter> intervals;
+    if (filter && filtered_) intervals.emplace(f, t, c, rho2, ccw);
     const I RI = iv(r_);
     std::string bad;
-    auto pointArcDist = [&](const ExprPoint& P) -> Expr {
-      ExprPoint v = sub(P, C);
-      if (inRange(v)) return abs(sqrt(dot(v, v)) - rho);
-      return std::min(dist(P, F), dist(P, Tp));
+    Expr found;  // the distance that was found below R (for the message)
+    auto below = [&](const Expr& d) {
+      if (!(d < R)) return false;
+      found = d;
+      return true;
     };
-    index_.query(cx - rr - m, cy - rr - m, cx + rr + m, cy + rr + m, [&](const detail::IndexedEdge& e) {
+    // the distance from P to the arc is below R (never a min of candidates: see segSegBelow)
+    auto pointArcBelow = [&](const ExprPoint& P) {
+      const ExprPoint v = sub(P, C);
+      if (inRange(v)) return below(abs(sqrt(dot(v, v)) - rho));
+      return below(dist(P, F)) || below(dist(P, Tp));
+    };
+    const bool jump = t2 != rho2;  // else t is where the arc ends
+    const auto visit = [&](const detail::IndexedEdge& e) {
       if (!bad.empty()) return;
-      // double filter: distance from the edge to the full circle's annulus
-      const double dc = detail::pointSegDist(cx, cy, e.ax, e.ay, e.bx, e.by);
-      const double far = std::max(std::hypot(e.ax - cx, e.ay - cy), std::hypot(e.bx - cx, e.by - cy));
-      if (dc > rr + m || far < rr - m) return;
-      if (filtered_ && CGAL::certainly(filter.lowerBound(*e.a, *e.b) >= RI)) return;
+      if (filter) {
+        // double filter: distance from the edge to the full circle's annulus
+        const double dc = detail::pointSegDist(cx, cy, e.ax, e.ay, e.bx, e.by);
+        const double far = std::max(std::hypot(e.ax - cx, e.ay - cy), std::hypot(e.bx - cx, e.by - cy));
+        if (dc > rr + m || far < rr - m) return;
+        if (intervals && CGAL::certainly(intervals->lowerBound(*e.a, *e.b) >= RI)) return;
+      }
       ++exactTests;
       const ExprPoint P = ep(*e.a), Q = ep(*e.b);
       // intersection of the segment with the circle inside the arc's range
@@ -251,23 +303,28 @@ public:
           if (inRange(sub(X, C))) hit = true;
         }
       }
-      Expr best = hit ? Expr(0) : std::min({pointSegDistance(F, P, Q), pointSegDistance(Tp, P, Q), pointArcDist(P),
-                                            pointArcDist(Q), pointSegDistance(T, P, Q)});
-      if (!hit && qa != 0) {
+      bool close = hit;
+      if (hit) found = Expr(0);
+      close = close || below(pointSegDistance(F, P, Q)) || below(pointSegDistance(Tp, P, Q)) || pointArcBelow(P) ||
+              pointArcBelow(Q) || (jump && segSegBelow(Tp, T, P, Q, R, found));
+      if (!close && qa != 0) {
         const Expr s = -dot(pc, d) / qa;  // foot of c on the line
         if (s > 0 && s < 1) {
           ExprPoint H{P.x + s * d.x, P.y + s * d.y};
           ExprPoint v = sub(H, C);
           const Expr hd = sqrt(dot(v, v));
-          if (hd >= rho && inRange(v)) best = std::min(best, hd - rho);
+          if (hd >= rho && inRange(v)) close = below(hd - rho);
         }
       }
-      if (best < R) {
+      if (close) {
         std::ostringstream os;
-        os << "disc meets an obstacle along the arc: distance " << best.doubleValue() << " < r = " << rd_;
+        os << "disc meets an obstacle along the arc: distance " << found.doubleValue() << " < r = " << rd_;
         bad = os.str();
       }
-    });
+    };
+    if (filter) index_.query(cx - rr - m, cy - rr - m, cx + rr + m, cy + rr + m, visit);
+    else
+      for (const detail::IndexedEdge& e : index_.edges()) visit(e);
     return bad;
   }
 

@@ -58,6 +58,11 @@ std::string where(std::size_t region, int hole, std::size_t vertex) {
 
 }  // namespace
 
+/// Workspace coordinates are bounded so that a path's doubles resolve the map: at 1e15 a double's
+/// spacing is 0.125 map units. Beyond, planning is meaningless and pictures, exports and the double
+/// filters would overflow; the readers refuse such maps (a WKT with 1e400, a GeoJSON with 1e300).
+static const Rational kMaxCoordinate("1000000000000000");
+
 void checkWorkspace(const Workspace& w) {
   if (w.regions.empty()) throw InputError(w.name, "workspace", "no polygon: the free space is empty");
   struct E {
@@ -74,6 +79,10 @@ void checkWorkspace(const Workspace& w) {
     for (int h = -1; h < static_cast<int>(reg.holes.size()); ++h) {
       const Ring& ring = h < 0 ? reg.outer : reg.holes[static_cast<std::size_t>(h)];
       if (ring.size() < 3) throw InputError(w.name, where(ri, h, 0), "ring has fewer than 3 distinct vertices");
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        if (abs(ring[i].x) > kMaxCoordinate || abs(ring[i].y) > kMaxCoordinate)
+          throw InputError(w.name, where(ri, h, i), "coordinate beyond ±1e15 (paths are written in doubles, which "
+                                                    "cannot hold positions at the map's scale out there)");
       for (std::size_t i = 0; i < ring.size(); ++i)
         if (ring[i] == ring[(i + 1) % ring.size()])
           throw InputError(w.name, where(ri, h, i), "repeated vertex");
@@ -123,7 +132,7 @@ void checkWorkspace(const Workspace& w) {
   // Holes inside their outer ring, not inside another hole; polygons not inside each other. Rings
   // do not cross (checked above), so one point per ring decides; double bounding boxes (with a
   // margin) skip the rings that cannot contain it.
-  struct BoxD {
+  struct RingBox {
     double x0, y0, x1, y1;
     bool may(const Point& p) const {
       const double x = p.x.get_d(), y = p.y.get_d(), e = 1e-9 * (1 + std::abs(x) + std::abs(y));
@@ -131,18 +140,18 @@ void checkWorkspace(const Workspace& w) {
     }
   };
   auto boxOf = [](const Ring& r) {
-    BoxD b{1e300, 1e300, -1e300, -1e300};
+    RingBox b{1e300, 1e300, -1e300, -1e300};
     for (const Point& p : r) {
       const double x = p.x.get_d(), y = p.y.get_d();
       b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
     }
     return b;
   };
-  std::vector<BoxD> outerBox;
+  std::vector<RingBox> outerBox;
   for (const Region& reg : w.regions) outerBox.push_back(boxOf(reg.outer));
   for (std::size_t ri = 0; ri < w.regions.size(); ++ri) {
     const Region& reg = w.regions[ri];
-    std::vector<BoxD> holeBox;
+    std::vector<RingBox> holeBox;
     for (const Ring& h : reg.holes) holeBox.push_back(boxOf(h));
     for (std::size_t h = 0; h < reg.holes.size(); ++h) {
       // the midpoint of an edge is on no other ring (rings meet only at vertices)

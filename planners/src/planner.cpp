@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace coverkit::planners {
@@ -120,25 +122,73 @@ std::optional<Point> defaultStart(const CellGrid& cells) {
   return std::nullopt;
 }
 
+namespace {
+/// A rational for messages: the nearest double when it is one, else the leading digits of its text.
+std::string shortText(const Rational& q) {
+  const double d = q.get_d();
+  if (q == 0 || (std::isfinite(d) && d != 0 && std::fabs(d) < 1e300)) return formatDouble(toDouble(q));
+  const std::string t = q.get_str();
+  if (t.size() <= 40) return t;
+  const long e = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 10)) - static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 10));
+  return std::string(q < 0 ? "-" : "") + "about 10^" + std::to_string(e);
+}
+}  // namespace
+
 void checkProblem(const Problem& problem) {
   const std::string& name = problem.workspace.name;
   if (problem.robots.empty()) throw InputError(name, "robots", "no robot");
   if (problem.workspace.regions.empty()) throw InputError(name, "workspace", "empty free space");
   const Box b = problem.workspace.bbox();
+  // paths, pictures and metrics are doubles: at 1e15 a double's spacing is 0.125 map units (the
+  // polygon readers refuse such coordinates already, checkWorkspace; grid maps are checked here)
+  static const Rational coordinateLimit(mpz_class("1" + std::string(15, '0')));
+  for (const Rational* v : {&b.xmin, &b.xmax, &b.ymin, &b.ymax})
+    if (abs(*v) > coordinateLimit)
+      throw InputError(name, "coordinates", "a coordinate of magnitude about 10^" + std::to_string(mpz_sizeinbase(mpz_class(abs(*v)).get_mpz_t(), 10) - 1) +
+                                                " is beyond the limit of 10^15 (paths are written in doubles, which cannot resolve the map out there)");
   for (std::size_t i = 0; i < problem.robots.size(); ++i) {
     const Robot& r = problem.robots[i];
-    if (r.radius <= 0) throw InputError("--radius", formatDouble(r.radius.get_d()), "robot radius must be > 0");
+    if (r.radius <= 0) throw InputError("--radius", shortText(r.radius), "robot radius must be > 0");
     if (2 * r.radius > b.xmax - b.xmin || 2 * r.radius > b.ymax - b.ymin)
-      throw InputError("--radius", formatDouble(r.radius.get_d()), "robot is larger than the workspace (" + name + ")");
+      throw InputError("--radius", shortText(r.radius), "robot is larger than the workspace (" + name + ")");
     if (r.start && !strictlyInside(problem.workspace, *r.start))
-      throw InputError("--start", formatDouble(r.start->x.get_d()) + "," + formatDouble(r.start->y.get_d()),
-                       "start is outside the workspace or inside an obstacle of " + name);
+      throw InputError("--start", shortText(r.start->x) + "," + shortText(r.start->y), "start is outside the workspace or inside an obstacle of " + name);
   }
-  if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", "", "must be > 0");
+  if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", shortText(*problem.cellSize), "must be > 0");
+}
+
+void checkCellGridSize(const Problem& problem) {
+  const Rational D = problem.subCellSize();
+  const Box b = problem.workspace.bbox();
+  // mega-cells of side 2D over the bounding box, counted exactly (no overflow for any D > 0)
+  auto megaCells = [&](const Rational& extent) {
+    const Rational q = extent / (2 * D);
+    mpz_class c;
+    mpz_cdiv_q(c.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+    return c < 1 ? mpz_class(1) : c;
+  };
+  const mpz_class cols = 2 * megaCells(b.xmax - b.xmin), rows = 2 * megaCells(b.ymax - b.ymin);
+  if (cols * rows <= kMaxSubCells) return;
+  auto approx = [](const mpz_class& n) {
+    std::ostringstream os;
+    if (n < 1000000) os << n.get_str();
+    else if (std::isfinite(n.get_d())) os << std::setprecision(3) << n.get_d();
+    else os << "10^" << mpz_sizeinbase(n.get_mpz_t(), 10) - 1;
+    return os.str();
+  };
+  const bool byCellSize = problem.cellSize.has_value();
+  const std::string option = byCellSize ? "--cell-size" : "--radius";
+  const std::string value = shortText(byCellSize ? *problem.cellSize : problem.robots.at(0).radius);
+  throw InputError(option, value,
+                   "the sub-cell grid would have " + approx(cols) + " × " + approx(rows) + " sub-cells of size D = " + shortText(D) +
+                       (byCellSize ? "" : " (2r)") + " over the " + shortText(Rational(b.xmax - b.xmin)) + " × " +
+                       shortText(Rational(b.ymax - b.ymin)) + " bounding box of " + problem.workspace.name + ", more than the limit of " +
+                       approx(mpz_class(kMaxSubCells)) + " sub-cells: use a larger " + (byCellSize ? "cell size" : "radius or cell size"));
 }
 
 PlanningContext makeContext(Problem problem) {
   checkProblem(problem);
+  checkCellGridSize(problem);  // before the grid is allocated
   PlanningContext ctx;
   const auto t0 = std::chrono::steady_clock::now();
   ctx.cells = classifyCells(problem.workspace, problem.subCellSize());

@@ -1,21 +1,44 @@
 #!/usr/bin/env bash
 # The command line on good and bad input: bad input gets exit code 2, a message naming the file or
-# option, the place and the problem, and no output file.
+# option, the place and the problem, and no output file (an existing one is left as it was).
+#
+# With COVERKIT_BAD_INPUTS_TABLE=FILE every bad-input case is also written to FILE as a row of a
+# Markdown table (case | command | exit | first line of stderr); tests/cli/bad_inputs_doc.sh turns
+# it into docs/bad-inputs.md.
 set -u
 CK="$1"; DATA="$2"; T="$3"
 rm -rf "$T"; mkdir -p "$T"
 fails=0; passes=0
 ok() { passes=$((passes + 1)); }
 bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+TABLE="${COVERKIT_BAD_INPUTS_TABLE:-}"
+[ -n "$TABLE" ] && printf '| case | command | exit | message (first line of stderr) |\n|---|---|---|---|\n' > "$TABLE"
+
+# Every file and folder under $T with its size and checksum (stdout and stderr of the cases aside).
+snapshot() {
+  (cd "$T" && find . -mindepth 1 ! -name stdout ! -name stderr -printf '%p %y %s\n' | LC_ALL=C sort &&
+     find . -type f ! -name stdout ! -name stderr -print0 | LC_ALL=C sort -z | xargs -0 -r md5sum)
+}
+# A table cell: paths of this run shortened, | escaped.
+cell() { printf '%s' "$1" | sed -e "s|$T/|T/|g" -e "s|$T|T|g" -e "s|$DATA/|data/|g" -e 's/|/\\|/g'; }
 
 # expect_bad "description" "expected message fragment" args...
+# Exit 2 within 120 s, a message containing the fragment, nothing created or changed under $T.
 expect_bad() {
   local what="$1" frag="$2"; shift 2
   rm -f "$T/out.json" "$T/out.png"
-  "$CK" "$@" > "$T/stdout" 2> "$T/stderr"; local rc=$?
+  local before; before="$(snapshot)"
+  timeout 120 "$CK" "$@" > "$T/stdout" 2> "$T/stderr"; local rc=$?
+  if [ -n "$TABLE" ]; then
+    printf '| %s | `coverkit %s` | %s | %s |\n' "$(cell "$what")" "$(cell "$*")" "$rc" "$(cell "$(head -1 "$T/stderr")")" >> "$TABLE"
+  fi
+  if [ $rc -eq 124 ]; then bad "$what: timed out (120 s)"; return; fi
   if [ $rc -ne 2 ]; then bad "$what: exit $rc, expected 2 ($(cat "$T/stderr"))"; return; fi
+  if [ -z "$frag" ]; then bad "$what: the test gives no message fragment to expect"; return; fi
   if ! grep -qF -- "$frag" "$T/stderr"; then bad "$what: message lacks '$frag': $(cat "$T/stderr")"; return; fi
-  if [ -e "$T/out.json" ] || [ -e "$T/out.png" ] || ls "$T"/*.tmp-coverkit >/dev/null 2>&1; then bad "$what: wrote an output file"; return; fi
+  if [ "$(snapshot)" != "$before" ]; then
+    bad "$what: wrote or changed files: $(diff <(echo "$before") <(snapshot) | head -5 | tr '\n' ' ')"; return
+  fi
   ok
 }
 plan() { echo plan --planner stc --radius "${1:-0.25}" --out "$T/out.json" --picture "$T/out.png" --map; }
@@ -68,7 +91,104 @@ expect_bad "cell size below 2r" "--cell-size: 0.4: must be at least 2r" $(plan) 
 expect_bad "unknown output format" "unknown output format '.txt'" plan --planner stc --radius 0.25 --out "$T/out.txt" --map "$T/room.wkt"
 expect_bad "unknown picture format" "unknown picture format" plan --planner stc --radius 0.25 --out "$T/out.json" --picture "$T/out.bmp" --map "$T/room.wkt"
 expect_bad "missing path file" "file not found" evaluate --map "$T/room.wkt" --path "$T/none.json"
-expect_bad "bad CLI flag" "" plan --bogus
+expect_bad "bad CLI flag" "--map is required" plan --bogus
+
+# --- outputs, options, experiment configs and limits (issue 12) -------------------------------
+# an existing output that every failing case below must leave as it was
+printf 'previous content\n' > "$T/existing.json"; printf 'previous picture\n' > "$T/existing.png"
+mkdir -p "$T/folder.json" "$T/folder.png"
+printf 'POLYGON((0 0, 1e400 0, 1e400 1e400, 0 1e400, 0 0))' > "$T/huge.wkt"
+printf 'MULTIPOLYGON(((0 0, 10 0, 10 10, 0 10, 0 0)),((1e400 0, 2e400 0, 2e400 1e400, 1e400 0)))' > "$T/far.wkt"
+printf '{"format":"coverkit.path/1","robots":[{"start":[1,1],"segments":[{"type":"line","from":[1,1],"to":[2,1]}]}]}' > "$T/hand.json"
+p() { echo plan --planner stc --radius 0.25 --map "$T/room.wkt"; }
+expect_bad "--picture in a missing folder, existing --out" "missing-folder/p.png: --picture: folder '$T/missing-folder' does not exist" $(p) --out "$T/existing.json" --picture "$T/missing-folder/p.png"
+expect_bad "--out in a missing folder" "x.json: --out: folder '$T/missing-folder' does not exist" $(p) --out "$T/missing-folder/x.json"
+expect_bad "--out is a folder" "folder.json: --out: is a folder, not a file" $(p) --out "$T/folder.json"
+expect_bad "--picture is a folder" "folder.png: --picture: is a folder, not a file" $(p) --out "$T/existing.json" --picture "$T/folder.png"
+expect_bad "--out under a file" "existing.json/x.json: --out: folder '$T/existing.json' is not a folder" $(p) --out "$T/existing.json/x.json"
+expect_bad "--out without a name" "--out: no file name given" $(p) --out ""
+expect_bad "--out with an unknown extension, existing --picture" "unknown output format '.txt'" $(p) --out "$T/x.txt" --picture "$T/existing.png"
+expect_bad "coordinates 1e400 (beyond a double), existing --out and --picture" "huge.wkt: polygon 1 outer ring vertex 2: coordinate beyond ±1e15" plan --planner stc --radius 1e399 --map "$T/huge.wkt" --out "$T/existing.json" --picture "$T/existing.png"
+expect_bad "a second polygon at x = 1e400" "far.wkt: polygon 2 outer ring vertex 1: coordinate beyond ±1e15" plan --planner stc --radius 0.25 --map "$T/far.wkt" --out "$T/existing.json"
+expect_bad "radius 1e-300: cell grid beyond the limit" "--radius: 1e-300: the sub-cell grid would have 5e+300 × 5e+300 sub-cells of size D = 2e-300 (2r) over the 10 × 10 bounding box of $T/room.wkt, more than the limit of 2e+08 sub-cells" plan --planner stc --radius 1e-300 --map "$T/room.wkt" --out "$T/existing.json" --picture "$T/existing.png"
+expect_bad "cell size 1e-6: cell grid beyond the limit" "--cell-size: 1e-06: the sub-cell grid would have 1e+07 × 1e+07 sub-cells" plan --planner stc --radius 1e-7 --cell-size 1e-6 --map "$T/room.wkt" --out "$T/existing.json"
+expect_bad "render: radius 1e-300" "--radius: 1e-300: the sub-cell grid would have" render --radius 1e-300 --map "$T/room.wkt" --out "$T/existing.png"
+expect_bad "evaluate: radius 1e-300" "--radius: 1e-300: the sub-cell grid would have" evaluate --radius 1e-300 --map "$T/room.wkt" --path "$T/hand.json"
+expect_bad "--time-limit -1" "--time-limit: -1: must be a finite number of seconds in [0, 10^9] (0: no limit)" $(p) --out "$T/existing.json" --time-limit -1
+expect_bad "--time-limit nan" "--time-limit: nan: must be a finite number of seconds" $(p) --out "$T/existing.json" --time-limit nan
+expect_bad "--time-limit inf" "--time-limit: inf: must be a finite number of seconds" $(p) --out "$T/existing.json" --time-limit inf
+expect_bad "--time-limit 1e300" "--time-limit: 1e300: must be a finite number of seconds in [0, 10^9]" $(p) --out "$T/existing.json" --time-limit 1e300
+expect_bad "--time-limit not a number" "--time-limit: 10s: not a number of seconds" $(p) --out "$T/existing.json" --time-limit 10s
+expect_bad "cspace: --picture in a missing folder, existing --out" "p.png: --picture: folder '$T/missing-folder' does not exist" cspace --map "$T/room.wkt" --radius 0.25 --out "$T/existing.json" --picture "$T/missing-folder/p.png"
+expect_bad "cspace: --out in a missing folder" "--out: folder '$T/missing-folder' does not exist" cspace --map "$T/room.wkt" --radius 0.25 --out "$T/missing-folder/c.json"
+expect_bad "cspace: coordinates 1e400" "coordinate beyond ±1e15" cspace --map "$T/huge.wkt" --radius 1 --out "$T/existing.json" --picture "$T/existing.png"
+expect_bad "render: --out in a missing folder" "--out: folder '$T/missing-folder' does not exist" render --map "$T/room.wkt" --radius 0.25 --out "$T/missing-folder/r.png"
+expect_bad "render: --out is a folder" "folder.png: --out: is a folder, not a file" render --map "$T/room.wkt" --radius 0.25 --out "$T/folder.png"
+expect_bad "render: --out with an unknown extension" "r.jpg: --out: unknown picture format '.jpg' (expected .png or .svg)" render --map "$T/room.wkt" --radius 0.25 --out "$T/r.jpg"
+expect_bad "demo: --out is an existing file" "existing.json: --out: exists and is not a folder" demo --out "$T/existing.json"
+expect_bad "demo: --out under a file" "existing.json/demo: --out: cannot be used: Not a directory" demo --out "$T/existing.json/demo"
+# experiments: options
+expect_bad "bsa: --size 100000 (would not fit)" "--size: 100000: must be in 2..1000" experiment bsa-backtracking --size 100000 --out "$T/bsa-out"
+expect_bad "bsa: --size 1" "--size: 1: must be in 2..1000" experiment bsa-backtracking --size 1 --out "$T/bsa-out"
+expect_bad "bsa: --seeds 1000000" "--seeds: 1000000: must be in 1..100000" experiment bsa-backtracking --seeds 1000000 --out "$T/bsa-out"
+expect_bad "bsa: --density 1" "--density: 1: must be in [0, 1)" experiment bsa-backtracking --density 1 --out "$T/bsa-out"
+expect_bad "bsa: --density nan" "--density: nan: must be in [0, 1)" experiment bsa-backtracking --density nan --out "$T/bsa-out"
+expect_bad "bsa: --density -0.1" "--density: -0.1: must be in [0, 1)" experiment bsa-backtracking --density -0.1 --out "$T/bsa-out"
+expect_bad "bsa: --density where S is walled in on nearly every map" "--density: 0.6: the start S(0, 0) is walled in" experiment bsa-backtracking --seeds 3 --density 0.6 --out "$T/bsa-out"
+expect_bad "bsa: --out is an existing file" "existing.json: --out: exists and is not a folder" experiment bsa-backtracking --seeds 1 --out "$T/existing.json"
+expect_bad "tracc: --out is an existing file" "existing.json: --out: exists and is not a folder" experiment tracc-scenarios --out "$T/existing.json"
+expect_bad "--seeds given to a sweep" "--seeds: coverage-vs-size: applies to the bsa-backtracking experiment only" experiment coverage-vs-size --seeds 3 --out "$T/cfg-out"
+expect_bad "--config given to bsa-backtracking" "--config: bsa-backtracking: this experiment takes no config" experiment bsa-backtracking --config "$T/cvs.yaml" --out "$T/cfg-out"
+# experiments: configs (each would run the whole default experiment, or crash, before)
+cfg() { printf -- "$2" > "$T/cfg-$1.yaml"; echo "$T/cfg-$1.yaml"; }
+expect_bad "config: a YAML scalar" "cfg-scalar.yaml: line 1: expected a YAML mapping with the keys title, planners, vary, radii, values, radius, worlds, got 'hello'" experiment sweep --config "$(cfg scalar 'hello\n')" --out "$T/cfg-out"
+expect_bad "config: an empty file" "cfg-empty.yaml: the config is empty: expected a YAML mapping" experiment sweep --config "$(cfg empty '')" --out "$T/cfg-out"
+expect_bad "config: comments only" "cfg-comment.yaml: the config is empty" experiment sweep --config "$(cfg comment '# nothing\n')" --out "$T/cfg-out"
+expect_bad "config: a YAML list" "cfg-list.yaml: line 1: expected a YAML mapping with the keys title, planners, vary, radii, values, radius, worlds, got a list" experiment sweep --config "$(cfg list '- stc\n- full_stc\n')" --out "$T/cfg-out"
+expect_bad "config: worlds a scalar" "cfg-wscalar.yaml: worlds: line 1: expected a mapping (count, width, height, obstacles, shape, min_size, max_size), got '3'" experiment sweep --config "$(cfg wscalar 'worlds: 3\n')" --out "$T/cfg-out"
+expect_bad "config: worlds a list" "cfg-wlist.yaml: worlds: line 1: expected a mapping" experiment coverage-vs-time --config "$(cfg wlist 'worlds: [1, 2]\n')" --out "$T/cfg-out"
+expect_bad "config: min_size .nan" "cfg-nan.yaml: worlds.min_size: line 1: must be a finite number, got '.nan'" experiment sweep --config "$(cfg nan 'worlds: {min_size: .nan}\n')" --out "$T/cfg-out"
+expect_bad "config: max_size .inf" "cfg-inf.yaml: worlds.max_size: line 1: must be a finite number, got '.inf'" experiment sweep --config "$(cfg inf 'worlds: {max_size: .inf}\n')" --out "$T/cfg-out"
+expect_bad "config: min_size > max_size" "cfg-minmax.yaml: worlds.max_size: 1: must be at least min_size (2)" experiment sweep --config "$(cfg minmax 'worlds: {min_size: 2, max_size: 1}\n')" --out "$T/cfg-out"
+expect_bad "config: min_size 0" "cfg-min0.yaml: worlds.min_size: 0: must be > 0" experiment sweep --config "$(cfg min0 'worlds: {min_size: 0}\n')" --out "$T/cfg-out"
+expect_bad "config: obstacles larger than the world" "cfg-big.yaml: worlds.max_size: 30: an obstacle must fit the 20×20 world" experiment sweep --config "$(cfg big 'worlds: {max_size: 30}\n')" --out "$T/cfg-out"
+expect_bad "config: count 0" "cfg-count.yaml: worlds.count: line 1: 0: must be in 1..10000" experiment sweep --config "$(cfg count 'worlds: {count: 0}\n')" --out "$T/cfg-out"
+expect_bad "config: width not an integer" "cfg-width.yaml: worlds.width: line 2: expected an integer, got '12.5'" experiment sweep --config "$(cfg width 'worlds:\n  width: 12.5\n')" --out "$T/cfg-out"
+expect_bad "config: unknown key in worlds" "cfg-wkey.yaml: worlds.widht: line 1: unknown key (known: count, width, height, obstacles, shape, min_size, max_size)" experiment sweep --config "$(cfg wkey 'worlds: {widht: 12}\n')" --out "$T/cfg-out"
+expect_bad "config: unknown key" "cfg-key.yaml: radiuses: line 1: unknown key (known: title, planners, vary, radii, values, radius, worlds)" experiment sweep --config "$(cfg key 'radiuses: [0.5]\n')" --out "$T/cfg-out"
+expect_bad "config: a key that is a list" "cfg-listkey.yaml: keys: line 1: a key is a list: keys are names" experiment sweep --config "$(cfg listkey '{[a]: 1}\n')" --out "$T/cfg-out"
+expect_bad "config: empty planner list" "cfg-noplanner.yaml: planners: line 1: the list is empty: name at least one planner" experiment sweep --config "$(cfg noplanner 'planners: []\n')" --out "$T/cfg-out"
+expect_bad "config: planners a scalar" "cfg-plscalar.yaml: planners: line 1: expected a list of texts, e.g. [a, b], got 'stc'" experiment sweep --config "$(cfg plscalar 'planners: stc\n')" --out "$T/cfg-out"
+expect_bad "config: a planner that is a mapping" "cfg-plmap.yaml: planners[1]: line 1: expected a text, got a mapping" experiment sweep --config "$(cfg plmap 'planners: [stc, {a: 1}]\n')" --out "$T/cfg-out"
+expect_bad "config: a planner listed twice" "cfg-twice.yaml: planners: 'stc' is listed twice" experiment sweep --config "$(cfg twice 'planners: [stc, full_stc, stc]\n')" --out "$T/cfg-out"
+expect_bad "config: title a list" "cfg-title.yaml: title: line 1: expected a text, got a list" experiment sweep --config "$(cfg title 'title: [a]\n')" --out "$T/cfg-out"
+expect_bad "config: empty radii" "cfg-noradii.yaml: radii: line 1: the list is empty: give at least one value" experiment sweep --config "$(cfg noradii 'radii: []\n')" --out "$T/cfg-out"
+expect_bad "config: radius .nan" "cfg-rnan.yaml: radii: .nan:" experiment sweep --config "$(cfg rnan 'radii: [.nan]\n')" --out "$T/cfg-out"
+expect_bad "config: radius 1e-300 (cell grid)" "cfg-rtiny.yaml: radii: 1e-300: the sub-cell grid would have 1e+301 × 1e+301 sub-cells" experiment sweep --config "$(cfg rtiny 'radii: [0.5, 1e-300]\n')" --out "$T/cfg-out"
+expect_bad "config: radius larger than the worlds" "cfg-rbig.yaml: radii: 11: robot is larger than the workspace (the 20×20 worlds)" experiment sweep --config "$(cfg rbig 'radii: [11]\n')" --out "$T/cfg-out"
+expect_bad "config: radii with vary: obstacles" "cfg-unused.yaml: radii: line 2: not used with vary: obstacles" experiment sweep --config "$(cfg unused 'vary: obstacles\nradii: [0.5]\n')" --out "$T/cfg-out"
+expect_bad "config: steps 0" "cfg-steps.yaml: steps: 0: must be in 1..1000" experiment coverage-vs-time --config "$(cfg steps 'steps: 0\n')" --out "$T/cfg-out"
+expect_bad "config: steps -3" "cfg-steps2.yaml: steps: -3: must be in 1..1000" experiment coverage-vs-time --config "$(cfg steps2 'steps: -3\n')" --out "$T/cfg-out"
+expect_bad "config: speed .inf" "cfg-speed.yaml: speed: line 1: must be a finite number, got '.inf'" experiment coverage-vs-time --config "$(cfg speed 'speed: .inf\n')" --out "$T/cfg-out"
+expect_bad "config: --out is an existing file" "existing.json: --out: exists and is not a folder" experiment sweep --config "$(cfg good 'planners: [stc]\nradii: [0.5]\nworlds: {count: 1, width: 8, height: 8, obstacles: 2}\n')" --out "$T/existing.json"
+expect_bad "config: --out under a file" "existing.json/sweep: --out: cannot be used: Not a directory" experiment sweep --config "$T/cfg-good.yaml" --out "$T/existing.json/sweep"
+[ "$(cat "$T/existing.json")" = "previous content" ] && [ "$(cat "$T/existing.png")" = "previous picture" ] && ok || bad "an existing output was changed"
+# two writers to one --out at once: each writes through its own temporary file
+"$CK" plan --planner stc --radius 0.25 --map "$T/room.wkt" --out "$T/shared.json" > /dev/null 2> "$T/w1.err" & w1=$!
+"$CK" plan --planner stc --radius 0.25 --map "$T/room.wkt" --out "$T/shared.json" > /dev/null 2> "$T/w2.err" & w2=$!
+wait $w1; r1=$?; wait $w2; r2=$?
+[ $r1 -eq 0 ] && [ $r2 -eq 0 ] && grep -q '"format": "coverkit.path/1"' "$T/shared.json" && ! ls "$T"/*tmp-coverkit* > /dev/null 2>&1 && ok || bad "concurrent writers: exits $r1 $r2: $(cat "$T/w1.err" "$T/w2.err")"
+# a plan with --out and --picture writes both
+"$CK" plan --planner stc --radius 0.25 --map "$T/room.wkt" --out "$T/both.json" --picture "$T/both.png" > /dev/null && [ -s "$T/both.json" ] && [ -s "$T/both.png" ] && ok || bad "plan with --out and --picture"
+# every shipped config passes the checks (--check runs nothing)
+for c in coverage_vs_size coverage_vs_complexity coverage_vs_shape smooth_stc_additions; do
+  "$CK" experiment sweep --check --config "$DATA/../../experiments/configs/$c.yaml" > /dev/null && ok || bad "shipped config $c refused"
+done
+"$CK" experiment coverage-vs-time --check > /dev/null && ok || bad "shipped coverage_vs_time.yaml refused"
+expect_bad "--check without a config" "--check: tracc-scenarios: only for the experiments with a config" experiment tracc-scenarios --check --out "$T/cfg-out"
+# an experiment's --out folder is created with its parents
+"$CK" experiment sweep --config "$T/cfg-good.yaml" --out "$T/new/deeper" > /dev/null && [ -s "$T/new/deeper/results.csv" ] && ok || bad "sweep into a new nested folder"
+# ---------------------------------------------------------------------------------------------
 
 # good input
 if "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.json" --picture "$T/good.svg" > "$T/stdout"; then ok; else bad "plan failed"; fi
@@ -136,12 +256,57 @@ expect_bad "config syntax" "cvs-bad2.yaml: line 2: YAML does not parse" experime
 expect_bad "config radius" "cvs-bad3.yaml: radii: -1: must be > 0" experiment coverage-vs-size --config "$T/cvs-bad3.yaml" --out "$T/out.json"
 expect_bad "config missing" "nothere.yaml: file: cannot be read" experiment coverage-vs-size --config "$T/nothere.yaml" --out "$T/out.json"
 "$CK" experiment tracc-scenarios --out "$T/tracc" > /dev/null && [ "$(grep -c '^[012],1,' "$T/tracc/results.csv")" -eq 3 ] && grep -q '^1,1,115,' "$T/tracc/results.csv" && [ -s "$T/tracc/scenario-1.svg" ] && ok || bad "tracc scenarios: $(cat "$T/tracc/results.csv" 2>/dev/null)"
-expect_bad "experiment seeds 0" "--seeds: 0: must be at least 1" experiment bsa-backtracking --seeds 0 --out "$T/out.json"
+expect_bad "experiment seeds 0" "--seeds: 0: must be in 1..100000" experiment bsa-backtracking --seeds 0 --out "$T/out.json"
 expect_bad "experiment obstacles" "--obstacles: blobs: must be clustered or scattered" experiment bsa-backtracking --obstacles blobs --out "$T/out.json"
 # the grid-rail planners on a map, end to end
 for p in tracc bsa_zigzag full_stc; do
   "$CK" plan --planner $p --radius 0.125 --map "$DATA/rooms.grid" --out "$T/$p.json" > /dev/null && "$CK" evaluate --map "$DATA/rooms.grid" --radius 0.125 --path "$T/$p.json" --json | grep -q '"valid": true' && ok || bad "$p on rooms.grid"
 done
+
+# ---------------------------------------------------------------------------------------------
+# Map and path-file readers (issue 12): images read as map_server reads them, limits checked
+# before anything is allocated, wrong types refused with exit 2 naming the file and the place.
+# The issue's image: 5x5 16-bit RGBA, white but for one grey 49151/65535 pixel (unknown): 24 free.
+printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\000\000\005\000\000\000\005\020\006\000\000\000\335\377\372\246\000\000\000\026\111\104\101\124\170\332\143\370\117\044\140\040\133\341\176\060\244\246\211\270\000\000\173\132\306\171\020\306\252\277\000\000\000\000\111\105\116\104\256\102\140\202' > "$T/rgba16.png"
+printf 'image: rgba16.png\nresolution: 1\norigin: [0, 0, 0]\n' > "$T/rgba16.yaml"
+"$CK" cspace --map "$T/rgba16.yaml" --radius 0.01 --out "$T/rgba16-cspace.json" > "$T/rgba16.out" 2>&1 && grep -q 'of free area 24 ' "$T/rgba16.out" && ok || bad "16-bit RGBA map: $(cat "$T/rgba16.out")"
+printf 'image: rgba16.png\nresolution: 1\norigin: [1e300, 0, 0]\n' > "$T/farorigin.yaml"
+expect_bad "a ROS map whose origin is at 1e300" "coordinates: a coordinate of magnitude about 10^300 is beyond the limit of 10^15" plan --planner stc --radius 0.25 --map "$T/farorigin.yaml" --out "$T/existing.json"
+# 165 bytes announcing 100000 x 100000 pixels
+printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\001\206\240\000\001\206\240\010\000\000\000\000\215\071\124\024\000\000\000\170\111\104\101\124\170\332\354\301\041\001\000\000\000\002\040\377\237\326\033\006\040\005\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\156\015\000\000\377\377\131\223\353\253' > "$T/huge.png"
+printf 'image: huge.png\nresolution: 0.05\norigin: [0, 0, 0]\n' > "$T/huge.yaml"
+printf 'P5\n16000 16000\n255\n' > "$T/hdr.pgm"; printf 'image: hdr.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n' > "$T/hdr.yaml"
+printf 'image: hdr.pgm\nresolution: 0.05\norigin: [0, 0, 0, 0]\n' > "$T/origin4.yaml"
+printf 'type octile\nheight 100000\nwidth 100000\nmap\n....\n' > "$T/huge.map"
+printf 'type octile\nheight 2\nwidth 3junk\nmap\n...\n...\n' > "$T/junk.map"
+printf 'type octile\nheight 2\nwidth 3.5\nmap\n...\n...\n' > "$T/frac.map"
+printf 'type octile\nheight 2\nwidth 3\nmap\n...\n...\n...\n' > "$T/extra.map"
+printf 'type octile\nheight 2\nwidth 3\nmap\n...\n...\n\n\n' > "$T/trailing.map"
+printf '{"type":"GeometryCollection"}' > "$T/gc-missing.geojson"
+printf '{"type":"GeometryCollection","geometries":3}' > "$T/gc-number.geojson"
+printf '{"type":"Feature","properties":{}}' > "$T/nogeom.geojson"
+printf '{"type":"Polygon","crs":{"type":"name","properties":{"name":"EPSG:4326"}},"coordinates":[[[179.9,1],[180.2,1],[180.2,1.1],[179.9,1]]]}' > "$T/lon.geojson"
+printf '{"format":7,"robots":[]}' > "$T/fmt.json"
+printf '{"format":"coverkit.path/1","planner":3,"robot_radius":0.25,"robots":[{"start":[1,5],"segments":[]}]}' > "$T/planner.json"
+printf '{"format":"coverkit.path/1","robot_radius":0.25,"robots":[{"start":[1,5],"segments":[{"type":"arc","from":[1,5],"to":[2,5],"center":[1.5,5],"ccw":"yes"}]}]}' > "$T/ccw.json"
+printf 'robot,seq,x,y\n0,0,1,5\n0,1,nan,5\n' > "$T/nan.csv"
+expect_bad "png announcing 100000^2 pixels" "huge.png: header: grid of 100000 x 100000 cells is too large (the limit is 268435456 = 2^28 cells)" $(plan) "$T/huge.yaml"
+expect_bad "pgm header without data" "hdr.pgm: pixel data: truncated PGM: 0 of 256000000 pixels" $(plan) "$T/hdr.yaml"
+expect_bad "ros origin of 4 numbers" "origin4.yaml: origin: expected [x, y, yaw], found 4 numbers" $(plan) "$T/origin4.yaml"
+expect_bad "moving ai 100000^2" "huge.map: header: grid of 100000 x 100000 cells is too large (the limit is 268435456" $(plan) "$T/huge.map"
+expect_bad "moving ai width 3junk" "junk.map: line 3: bad width '3junk'" $(plan) "$T/junk.map"
+expect_bad "moving ai width 3.5" "frac.map: line 3: bad width '3.5'" $(plan) "$T/frac.map"
+expect_bad "moving ai extra row" "extra.map: line 7: extra row beyond the height of 2 rows" $(plan) "$T/extra.map"
+"$CK" plan --planner stc --radius 0.25 --map "$T/trailing.map" --out "$T/trailing.json" > /dev/null 2>&1 && ok || bad "moving ai: trailing empty lines refused"
+expect_bad "geometrycollection without geometries" "gc-missing.geojson: geometries: missing" $(plan) "$T/gc-missing.geojson"
+expect_bad "geometrycollection geometries a number" "gc-number.geojson: geometries: expected an array" $(plan) "$T/gc-number.geojson"
+expect_bad "feature without geometry" "nogeom.geojson: geometry: missing" $(plan) "$T/nogeom.geojson"
+expect_bad "lon/lat crs, longitude out of range" "lon.geojson: coordinates[0][1]: longitude 180.2 outside [-180, 180]" $(plan) "$T/lon.geojson"
+expect_bad "path format a number" "fmt.json: format: expected the string" evaluate --map "$T/room.wkt" --path "$T/fmt.json"
+expect_bad "path planner a number" "planner.json: planner: expected a string, found number" evaluate --map "$T/room.wkt" --path "$T/planner.json"
+expect_bad "path arc ccw a string" "ccw.json: robots[0].segments[0].ccw: expected true or false, found string" evaluate --map "$T/room.wkt" --path "$T/ccw.json"
+expect_bad "path csv nan" "nan.csv: line 3: non-finite x 'nan'" evaluate --map "$T/room.wkt" --radius 0.25 --path "$T/nan.csv"
+# --------------------------------------------------------------------------------------------- end of the readers block
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -195,3 +195,105 @@ TEST(LoadMap, UnknownExtensionAndMissingFile) {
   expectInputError([] { datasets::loadMap(write("x.xyz", "")); }, "unknown map format");
   expectInputError([] { datasets::loadMap((tmpDir() / "nope.map").string()); }, "file not found");
 }
+
+// ---------------------------------------------------------------- issue 12: refused, not accepted
+TEST(RosMap, OriginMustBeThreeNumbers) {
+  write("o.pgm", pgm(2, 2, {254, 254, 254, 254}));
+  expectInputError([] { datasets::readRosMap(write("o4.yaml", "image: o.pgm\nresolution: 1\norigin: [0, 0, 0, 0]\n")); },
+                   "o4.yaml: origin: expected [x, y, yaw], found 4 numbers");
+  expectInputError([] { datasets::readRosMap(write("o2.yaml", "image: o.pgm\nresolution: 1\norigin: [0, 0]\n")); }, "expected [x, y, yaw], found 2 numbers");
+  expectInputError([] { datasets::readRosMap(write("os.yaml", "image: o.pgm\nresolution: 1\norigin: 3\n")); }, "origin: expected [x, y, yaw]");
+  expectInputError([] { datasets::readRosMap(write("ox.yaml", "image: o.pgm\nresolution: 1\norigin: [0, a, 0]\n")); }, "origin[1]");
+  expectInputError([] { datasets::readRosMap(write("om.yaml", "image: o.pgm\nresolution: 1\nmode: [raw]\n")); }, "mode: unknown mode");
+  expectInputError([] { datasets::readRosMap(write("oi.yaml", "image: [o.pgm]\nresolution: 1\n")); }, "image: expected a file name");
+  EXPECT_EQ(freeArea(datasets::readRosMap(write("o3.yaml", "image: o.pgm\nresolution: 1\norigin: [1, 2, 0]\n"))), Rational(4));
+  EXPECT_EQ(freeArea(datasets::readRosMap(write("o0.yaml", "image: o.pgm\nresolution: 1\n"))), Rational(4));  // missing: [0, 0, 0]
+}
+
+TEST(MovingAi, SizesRowsAndLimits) {
+  expectInputError([] { datasets::readMovingAi(write("junk.map", "type octile\nheight 2\nwidth 12junk\nmap\n............\n............\n")); },
+                   "junk.map: line 3: bad width '12junk' (expected a positive integer)");
+  expectInputError([] { datasets::readMovingAi(write("frac.map", "type octile\nheight 2\nwidth 12.5\nmap\n............\n............\n")); },
+                   "frac.map: line 3: bad width '12.5'");
+  expectInputError([] { datasets::readMovingAi(write("neg.map", "type octile\nheight -2\nwidth 3\nmap\n...\n...\n")); }, "line 2: bad height '-2'");
+  expectInputError([] { datasets::readMovingAi(write("zero.map", "type octile\nheight 0\nwidth 3\nmap\n")); }, "line 2: bad height '0'");
+  expectInputError([] { datasets::readMovingAi(write("big.map", "type octile\nheight 100000\nwidth 100000\nmap\n....\n")); },
+                   "big.map: header: grid of 100000 x 100000 cells is too large (the limit is 268435456 = 2^28 cells)");
+  expectInputError([] { datasets::readMovingAi(write("long.map", "type octile\nheight 99999999\nwidth 2\nmap\n..\n")); }, "long.map: line 6: missing map row 2 of 99999999");
+  expectInputError([] { datasets::readMovingAi(write("extra.map", "type octile\nheight 2\nwidth 3\nmap\n...\n...\n...\n")); },
+                   "extra.map: line 7: extra row beyond the height of 2 rows");
+  expectInputError([] { datasets::readMovingAi(write("extra2.map", "type octile\nheight 2\nwidth 3\nmap\n...\n...\n\n@@@\n")); }, "extra2.map: line 8: extra row");
+  expectInputError([] { datasets::readMovingAi(write("wide.map", "type octile\nheight 2\nwidth 3\nmap\n....\n...\n")); }, "wide.map: line 5: row has 4 cells, width is 3");
+  // tolerated: trailing empty (or blank) lines, CRLF line ends, spaces around the numbers
+  EXPECT_EQ(freeArea(datasets::readMovingAi(write("trail.map", "type octile\r\nheight  2 \r\nwidth 3\r\nmap\r\n...\r\n.@.\r\n\r\n  \n\n"))), Rational(5));
+}
+
+TEST(TextGrid, LimitIsShared) {
+  EXPECT_EQ(datasets::kMaxGridCells, std::int64_t{1} << 28);
+  expectInputError([] { datasets::checkGridSize("x", "header", 16385, 16384); }, "x: header: grid of 16385 x 16384 cells is too large");
+  EXPECT_NO_THROW(datasets::checkGridSize("x", "header", 16384, 16384));
+  EXPECT_NO_THROW(datasets::checkGridSize("x", "header", 1, datasets::kMaxGridCells));
+  expectInputError([] { datasets::checkGridSize("x", "header", 2, datasets::kMaxGridCells); }, "too large");
+}
+
+TEST(GeoJson, EveryWrongTypeIsAnInputErrorNamingThePlace) {
+  const std::string sq = R"([[[0,0],[4,0],[4,4],[0,4],[0,0]]])";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"type":"GeometryCollection"})", "g.geojson: geometries: missing: GeometryCollection without geometries"},
+      {R"({"type":"GeometryCollection","geometries":3})", "g.geojson: geometries: expected an array (geometries), found number"},
+      {R"({"type":"GeometryCollection","geometries":[{"type":"Polygon","coordinates":"x"}]})",
+       "g.geojson: geometries[0].coordinates: expected an array (rings), found string"},
+      {R"({"type":"GeometryCollection","geometries":[7]})", "geometries[0]: expected a geometry object, found number"},
+      {R"({"type":"Feature"})", "g.geojson: geometry: missing (a Feature without a location"},
+      {R"({"type":"Feature","geometry":null})", "no Polygon in the GeoJSON: empty free space"},
+      {R"({"type":"FeatureCollection","features":[{"type":"Feature","geometry":null},{"type":"Feature"}]})", "features[1].geometry: missing"},
+      {R"({"type":"FeatureCollection","features":[3]})", "features[0]: expected a Feature object, found number"},
+      {R"({"type":"FeatureCollection","features":[{"type":"Polygon","coordinates":)" + sq + "}]}", "features[0].type: expected 'Feature', found 'Polygon'"},
+      {R"({"type":"FeatureCollection","features":{}})", "features: expected an array of Features"},
+      {R"({"type":"FeatureCollection"})", "features: missing"},
+      {R"({"type":5})", "g.geojson: type: expected a string, found number"},
+      {R"({"coordinates":[]})", "g.geojson: type: missing"},
+      {R"([1,2])", "not GeoJSON: expected an object"},
+      {R"({"type":"Polygon"})", "coordinates: missing: Polygon without rings"},
+      {R"({"type":"MultiPolygon","coordinates":[3]})", "coordinates[0]: expected an array of rings, found number"},
+      {R"({"type":"Polygon","coordinates":[3]})", "coordinates[0]: expected a ring (an array of positions), found number"},
+      {R"({"type":"Polygon","coordinates":[[[0,0],[4,"a"],[4,4]]]})", "coordinates[0][1]: position is not [x, y]"},
+      {R"({"type":"Polygon","coordinates":[[[0,0],[4,0,"z"],[4,4]]]})", "coordinates[0][1][2]: expected a number (an altitude)"},
+      {R"({"type":"LineString","coordinates":[[0,0],[1,1]]})", "type: unsupported geometry type 'LineString'"},
+      {R"({"type":"Polygon","crs":"EPSG:4326","coordinates":)" + sq + "}", "crs: expected an object"},
+  };
+  for (const auto& [text, want] : cases) expectInputError([&] { datasets::parseGeoJson(text, "g.geojson"); }, want);
+  // GeometryCollections nested deeper than 64: refused, not a stack overflow
+  std::string deep = sq;
+  deep = R"({"type":"Polygon","coordinates":)" + sq + "}";
+  for (int i = 0; i < 200; ++i) deep = R"({"type":"GeometryCollection","geometries":[)" + deep + "]}";
+  expectInputError([&] { datasets::parseGeoJson(deep, "deep.geojson"); }, "nested more than 64 deep");
+  // null crs: as if absent; a null-geometry feature beside a located one adds nothing
+  EXPECT_EQ(freeArea(datasets::parseGeoJson(R"({"type":"FeatureCollection","crs":null,"features":[{"type":"Feature","geometry":null},)"
+                                            R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":)" + sq + "}}]}",
+                                            "ok.geojson")),
+            Rational(16));
+}
+
+TEST(GeoJson, FrameRule) {
+  // no crs, a position out of the longitude range: metric as written (documented), whatever the extent
+  const Workspace m = datasets::parseGeoJson(R"({"type":"Polygon","coordinates":[[[200,10],[200.1,10],[200.1,10.1],[200,10.1],[200,10]]]})", "m.geojson");
+  EXPECT_EQ(m.units, "m");
+  EXPECT_EQ(freeArea(m), ratio(1, 100));
+  // no crs, in range, extent below half a degree: longitude/latitude, projected
+  const Workspace ll = datasets::parseGeoJson(R"({"type":"Polygon","coordinates":[[[179.8,10],[179.9,10],[179.9,10.1],[179.8,10.1],[179.8,10]]]})", "ll.geojson");
+  EXPECT_EQ(ll.units, "m (projected from lon/lat)");
+  // in range, extent of half a degree or more: metric
+  EXPECT_EQ(datasets::parseGeoJson(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,1],[0,0]]]})", "w.geojson").units, "m");
+  // a crs that says longitude/latitude: a position out of range is an error naming it
+  const std::string crs = R"("crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:OGC:1.3:CRS84"}})";
+  expectInputError(
+      [&] {
+        datasets::parseGeoJson(R"({"type":"FeatureCollection",)" + crs +
+                                   R"(,"features":[{"type":"Feature","geometry":{"type":"Polygon","coordinates":[[[179.9,10],[180.1,10],[180.1,10.1],[179.9,10]]]}}]})",
+                               "c.geojson");
+      },
+      "c.geojson: features[0].geometry.coordinates[0][1]: longitude 180.1 outside [-180, 180] (the crs says longitude/latitude)");
+  expectInputError([&] { datasets::parseGeoJson(R"({"type":"Polygon",)" + crs + R"(,"coordinates":[[[10,89.9],[10.1,90.5],[10.1,89.9],[10,89.9]]]})", "c.geojson"); },
+                   "c.geojson: coordinates[0][1]: latitude 90.5 outside [-90, 90]");
+}

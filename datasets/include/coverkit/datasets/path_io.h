@@ -55,7 +55,44 @@ struct CSpaceDocument {
 };
 void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc);
 
-/// Writes `content` to `file` atomically (temporary file + rename).
+/// The content of a path file as `writePathFile` writes it (by extension; InputError for an unknown one).
+std::string pathFileContent(const std::string& file, const PathDocument& doc);
+/// The content of a C-space file as `writeCSpaceFile` writes it.
+std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc);
+
+/// Writes `content` to `file` atomically: a temporary file with a unique name in the same folder,
+/// renamed into place only when it is complete (an OutputBatch of one file).
 void writeFileAtomically(const std::string& file, const std::string& content);
+
+/// Checks, before any work, that `file` can be written: a name is given, its extension (compared
+/// in lower case) is one of `extensions` (with the dot; empty: any), its folder exists, is a folder
+/// and is writable, and `file` itself is not a folder or a special file. InputError(file, option,
+/// problem) otherwise; nothing is created.
+void checkOutputFile(const std::string& file, const std::string& option, const std::vector<std::string>& extensions);
+
+/// Checks, before any work, that `folder` can receive the files `names`: it is a writable folder,
+/// or it does not exist and can be created (its nearest existing ancestor is a writable folder);
+/// none of `names` is an existing folder or special file in it. Nothing is created.
+void checkOutputFolder(const std::string& folder, const std::string& option, const std::vector<std::string>& names = {});
+
+/// The output files of one command, written together at the end: every file goes to a temporary
+/// file with a unique name (mkstemp) in its own folder, and the temporary files are renamed into
+/// place only when all of them are complete. If anything fails, no file of the batch is left:
+/// files already renamed are removed, or restored when they replaced an existing file, and
+/// folders the batch created are removed; then InputError names the file and the reason (errno).
+class OutputBatch {
+public:
+  /// `folder`, when not empty, is created (with its missing parents) when the batch is committed.
+  explicit OutputBatch(std::string folder = "") : folder_(std::move(folder)) {}
+  void add(std::string file, std::string content);
+  /// A file of `folder` by its name.
+  void addInFolder(const std::string& name, std::string content);
+  void commit();
+  std::size_t size() const { return files_.size(); }
+
+private:
+  std::string folder_;
+  std::vector<std::pair<std::string, std::string>> files_;
+};
 
 }  // namespace coverkit::datasets

@@ -18,6 +18,13 @@ struct MapOptions {
   bool unknownIsFree = false;   ///< ROS maps: unknown pixels are obstacles unless set
 };
 
+/// The largest grid any grid reader accepts (ROS image, Moving AI, text grid): 2^28 cells, a
+/// 16384 × 16384 image. Checked on the header, before anything of that size is allocated.
+constexpr std::int64_t kMaxGridCells = std::int64_t{1} << 28;
+/// InputError (naming `file`, `place` and the limit) unless 1 <= width, height and
+/// width · height <= kMaxGridCells.
+void checkGridSize(const std::string& file, const std::string& place, std::int64_t width, std::int64_t height);
+
 /// A binary occupancy grid: cell (col, row) with row 0 at the BOTTOM; true = obstacle.
 struct OccupancyGrid {
   int width = 0, height = 0;
@@ -33,6 +40,8 @@ std::string readTextFile(const std::string& path);
 Workspace loadMap(const std::string& path, const MapOptions& options = {});
 
 Workspace readRosMap(const std::string& yamlPath, const MapOptions& options = {});
+/// The ROS map's grid before it becomes polygons: how every pixel was read (docs/formats.md).
+OccupancyGrid readRosGrid(const std::string& yamlPath, const MapOptions& options = {});
 Workspace readMovingAi(const std::string& path);
 Workspace readWkt(const std::string& path);
 Workspace parseWkt(const std::string& text, const std::string& name);

@@ -31,6 +31,11 @@ struct Path {
   double length() const;
   /// Points along the path, arcs sampled so the chord error is at most `tolerance`.
   std::vector<PointD> polyline(double tolerance) const;
+  /// The parts of the path inside `box`, as runs of points (pieces clipped to the box, arcs sampled
+  /// with chord error ≤ `tolerance`); a run ends where the path leaves the box. The number of points
+  /// is bounded by what lies inside the box, whatever the path does outside it (an arc of radius
+  /// 1e12 costs what its part in the box costs): metrics and pictures sample with this.
+  std::vector<std::vector<PointD>> polylineWithin(double tolerance, const BoxD& box) const;
 };
 
 struct Robot {

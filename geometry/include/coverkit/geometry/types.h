@@ -16,6 +16,11 @@ struct PointD {
   double x = 0, y = 0;
 };
 
+/// An axis-parallel box in doubles (for sampling and pictures, never for decisions).
+struct BoxD {
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+};
+
 /// A closed ring of vertices (the last vertex is not repeated). Outer rings are counter-clockwise,
 /// holes clockwise, once a Workspace is normalised.
 using Ring = std::vector<Point>;

@@ -73,11 +73,21 @@ struct PlanningContext {
   double cellSeconds = 0;              ///< time spent classifying (reported as a phase)
 };
 
-/// Checks robots, radii, starts and cell size against the workspace (InputError on bad input).
+/// Checks robots, radii, starts and cell size against the workspace (InputError on bad input); the
+/// workspace's coordinates must stay within ±10^150 (paths are doubles). makeContext adds
+/// checkCellGridSize; a command without a cell grid (cspace) needs only this.
 void checkProblem(const Problem& problem);
 
-/// Builds the context: checks the robot and start (InputError), classifies cells once, and fills in
-/// the default start where none was given (see defaultStart).
+/// The most sub-cells a problem may have (the cell grid takes about 2 bytes per sub-cell, the
+/// planners' arrays more); the same limit as classifyCells.
+constexpr long kMaxSubCells = 200'000'000L;
+/// InputError naming --radius (or --cell-size when given), the grid's dimensions and the limit
+/// when the sub-cell grid over the workspace's bounding box would exceed kMaxSubCells; counted
+/// exactly, before anything is allocated.
+void checkCellGridSize(const Problem& problem);
+
+/// Builds the context: checks the problem and the size of its cell grid (InputError) before allocating
+/// anything, classifies cells once, and fills in the default start where none was given (see defaultStart).
 PlanningContext makeContext(Problem problem);
 
 /// The documented default start: the centre of the first free sub-cell, in row order from the
