@@ -131,22 +131,18 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   for (const Path& p : paths) swept += 2 * r * p.length() + M_PI * r * r;
   m.sweptAreaOverlap = area > 0 ? swept / area - 1 : 0;
   const std::size_t vertices = problem.workspace.vertexCount();
-  if (o.coverable && !o.cspace && vertices > o.coverableMaxVertices)
+  if (o.coverable && !o.cspace && vertices > o.coverableMaxVertices) {
     m.coverableSkipped = "the workspace has " + std::to_string(vertices) + " vertices, more than " +
                          std::to_string(o.coverableMaxVertices) + " (the C-space would cost minutes)";
-  else if (o.coverable) {
-    std::optional<CSpace> own;
-    if (!o.cspace) own.emplace(problem.workspace, problem.robots.at(0).radius);
-    const CSpace& cs = o.cspace ? *o.cspace : *own;
-    std::vector<int> seen;
-    for (const Path& p : paths) {
-      const int k = cs.componentOf({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
-      if (k < 0 || std::find(seen.begin(), seen.end(), k) != seen.end()) continue;
-      seen.push_back(k);
-      double err = 0;
-      m.coverableArea += cs.coverableArea(k, err);
-      m.coverableAreaError += err;
-    }
+  } else if (o.coverable) {
+    // the closed convention (cspace.h): the closed C-free components holding the starts, found on
+    // the C-space of radius r − δ, so that everything a valid path sweeps lies in the region
+    std::vector<Point> starts;
+    for (const Path& p : paths) starts.push_back({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
+    double err = 0;
+    m.coverableArea = o.cspace ? o.cspace->coverableArea(starts, err)
+                               : coverableArea(problem.workspace, problem.robots.at(0).radius, starts, err);
+    m.coverableAreaError = err;
     m.hasCoverable = true;
     m.coverableCoverage = m.coverableArea > 0 ? area / m.coverableArea : 0;
   }
