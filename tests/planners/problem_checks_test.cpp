@@ -3,6 +3,8 @@
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/planner.h>
 
+#include "helpers/checkers.h"
+
 #include <gtest/gtest.h>
 
 using namespace coverkit;
@@ -17,14 +19,7 @@ Problem room(const std::string& radius, std::optional<std::string> cellSize = st
   if (cellSize) p.cellSize = parseRational(*cellSize);
   return p;
 }
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string messageOf(const std::function<void()>& f) { return testing_helpers::inputErrorMessage(f); }
 }  // namespace
 
 TEST(ProblemChecks, ACellGridBeyondTheLimitIsRefusedWithItsNumbers) {
