@@ -30,7 +30,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }  // namespace
 
 ParamSet::ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner) {
-  for (const auto& [key, value] : given) {
+  for (const auto& entry : given) {
+    const std::string& key = entry.first;  // not a structured binding: clang before 16 cannot capture one
     auto it = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == key; });
     if (it == specs.end()) {
       std::string known;

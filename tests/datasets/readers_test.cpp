@@ -262,7 +262,7 @@ TEST(GeoJson, EveryWrongTypeIsAnInputErrorNamingThePlace) {
       {R"({"type":"LineString","coordinates":[[0,0],[1,1]]})", "type: unsupported geometry type 'LineString'"},
       {R"({"type":"Polygon","crs":"EPSG:4326","coordinates":)" + sq + "}", "crs: expected an object"},
   };
-  for (const auto& [text, want] : cases) expectInputError([&] { datasets::parseGeoJson(text, "g.geojson"); }, want);
+  for (const auto& c : cases) expectInputError([&] { datasets::parseGeoJson(c.first, "g.geojson"); }, c.second);
   // GeometryCollections nested deeper than 64: refused, not a stack overflow
   std::string deep = sq;
   deep = R"({"type":"Polygon","coordinates":)" + sq + "}";

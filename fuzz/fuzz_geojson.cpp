@@ -1,0 +1,10 @@
+// GeoJSON text → parseGeoJson (the reader behind readGeoJson, without the file).
+#include "fuzz_common.h"
+
+#include <coverkit/datasets/readers.h>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  coverkit::fuzz::expectReadOrInputError([&] { coverkit::datasets::parseGeoJson(text, "fuzz.geojson"); });
+  return 0;
+}
