@@ -1,6 +1,7 @@
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/geometry/sampling.h>
 
 #include <nlohmann/json.hpp>
 
@@ -29,16 +30,22 @@ json segmentJson(const PathSegment& s) {
   if (s.kind == PathSegment::Kind::kLine) return {{"type", "line"}, {"from", pt(s.from)}, {"to", pt(s.to)}};
   return {{"type", "arc"}, {"from", pt(s.from)}, {"to", pt(s.to)}, {"center", pt(s.center)}, {"ccw", s.ccw}};
 }
-/// A closed loop as a GeoJSON ring: arcs sampled to the stated tolerance, first point repeated.
-json ringJson(const CurveLoop& loop) {
-  Path p;
-  if (loop.pieces.empty()) return json::array();
-  p.start = loop.pieces.front().from;
-  p.segments = loop.pieces;
+/// A sampled ring as a GeoJSON ring: first point repeated.
+json ringJson(const std::vector<PointD>& points) {
   json ring = json::array();
-  for (PointD q : p.polyline(kArcSampleTolerance)) ring.push_back(pt(q));
+  for (PointD q : points) ring.push_back(pt(q));
   if (ring.size() > 1 && ring.front() != ring.back()) ring.push_back(ring.front());
   return ring;
+}
+/// The path as points for the line-only formats: arcs on their safe side (docs/formats.md).
+std::vector<PointD> pointsOf(const std::string& file, const PathDocument& doc, std::size_t robot) {
+  const Path& p = doc.paths[robot];
+  if (!doc.workspace || doc.robotRadius <= 0) return outerPolyline(p, kArcSampleTolerance);
+  SafePolyline s = safePolyline(p, *doc.workspace, doc.robotRadius, kArcSampleTolerance);
+  if (s.unsafeSegment >= 0)
+    throw InputError(file, "robots[" + std::to_string(robot) + "].segments[" + std::to_string(s.unsafeSegment) + "]",
+                     "this arc keeps clearance r, but no lines found to replace it do; write the path as .json");
+  return std::move(s.points);
 }
 std::string ext(const std::string& f) {
   std::string e = fs::path(f).extension().string();
@@ -330,7 +337,7 @@ std::string pathFileContent(const std::string& file, const PathDocument& doc) {
   } else if (e == ".csv") {
     os << "robot,seq,x,y\n";
     for (std::size_t r = 0; r < doc.paths.size(); ++r) {
-      const auto pts = doc.paths[r].polyline(kArcSampleTolerance);
+      const auto pts = pointsOf(file, doc, r);
       for (std::size_t i = 0; i < pts.size(); ++i) os << r << ',' << i << ',' << pts[i].x << ',' << pts[i].y << '\n';
     }
     return os.str();
@@ -338,7 +345,7 @@ std::string pathFileContent(const std::string& file, const PathDocument& doc) {
     json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
     for (std::size_t r = 0; r < doc.paths.size(); ++r) {
       json coords = json::array();
-      for (PointD p : doc.paths[r].polyline(kArcSampleTolerance)) coords.push_back(pt(p));
+      for (PointD p : pointsOf(file, doc, r)) coords.push_back(pt(p));
       fc["features"].push_back({{"type", "Feature"},
                                 {"properties", {{"robot", r}, {"planner", doc.planner}, {"arc_tolerance", kArcSampleTolerance}}},
                                 {"geometry", {{"type", "LineString"}, {"coordinates", coords}}}});
@@ -382,18 +389,31 @@ std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc
     return j.dump(1) + "\n";
   } else if (e == ".geojson") {
     json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
-    auto add = [&](const std::vector<CurveRegion>& rs, const char* kind) {
-      for (std::size_t i = 0; i < rs.size(); ++i) {
-        json rings = json::array({ringJson(rs[i].outer)});
-        for (const CurveLoop& h : rs[i].holes) rings.push_back(ringJson(h));
-        fc["features"].push_back({{"type", "Feature"},
-                                  {"properties", {{"kind", kind}, {"index", i}, {"area", rs[i].area}, {"arc_tolerance", kArcSampleTolerance},
-                                                  {"start_component", std::string(kind) == "cfree" && static_cast<int>(i) == doc.startComponent}}},
-                                  {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
+    // C-free inside the exact C-free (every edge checked exactly when the workspace is known),
+    // C-obstacles with their arcs replaced outside (docs/formats.md)
+    std::vector<std::size_t> index;  // sampled piece → its component in doc.components
+    std::vector<SampledRegion> cfree;
+    if (doc.cspace) {
+      for (CSpace::SampledComponent& c : doc.cspace->sampledComponents(kArcSampleTolerance)) {
+        if (c.component < 0 || static_cast<std::size_t>(c.component) >= doc.components.size()) continue;
+        index.push_back(static_cast<std::size_t>(c.component));
+        cfree.push_back(std::move(c.region));
       }
+    } else {
+      cfree = sampleRegions(doc.components, kArcSampleTolerance, true);
+      for (std::size_t i = 0; i < cfree.size(); ++i) index.push_back(i);
+    }
+    const std::vector<SampledRegion> cobs = sampleRegions(doc.obstacles, kArcSampleTolerance, false);
+    auto add = [&](const SampledRegion& s, std::size_t i, double area, const char* kind) {
+      json rings = json::array({ringJson(s.outer)});
+      for (const auto& h : s.holes) rings.push_back(ringJson(h));
+      fc["features"].push_back({{"type", "Feature"},
+                                {"properties", {{"kind", kind}, {"index", i}, {"area", area}, {"arc_tolerance", kArcSampleTolerance},
+                                                {"start_component", std::string(kind) == "cfree" && static_cast<int>(i) == doc.startComponent}}},
+                                {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
     };
-    add(doc.components, "cfree");
-    add(doc.obstacles, "cobstacle");
+    for (std::size_t k = 0; k < cfree.size(); ++k) add(cfree[k], index[k], doc.components[index[k]].area, "cfree");
+    for (std::size_t i = 0; i < cobs.size(); ++i) add(cobs[i], i, doc.obstacles[i].area, "cobstacle");
     return fc.dump(1) + "\n";
   } else {
     throw InputError(file, "--out", "unknown output format '" + e + "' (expected .json or .geojson)");

@@ -104,6 +104,7 @@ datasets::PathDocument makeDocument(const planners::PlanningContext& ctx, const 
   d.robotRadius = ctx.problem.robots.at(0).radius;
   d.cellSize = ctx.cells.subSize();
   d.paths = r.plan.paths;
+  d.workspace = &ctx.problem.workspace;  // CSV/GeoJSON: arcs sampled on their exactly checked safe side
   if (succeeded(r.plan.status)) d.metrics = datasets::metricFields(r.metrics);
   for (auto& [k, v] : r.plan.statistics) d.statistics.emplace_back(k, v);
   return d;
@@ -376,6 +377,7 @@ int main(int argc, char** argv) {
       doc.cfreeArea = cs.area();
       doc.components = cs.components();
       doc.obstacles = cs.obstacles();
+      doc.cspace = &cs;  // GeoJSON: C-free polygons checked to lie in the exact C-free
       if (problem.robots[0].start) {
         doc.start = PointD{problem.robots[0].start->x.get_d(), problem.robots[0].start->y.get_d()};
         doc.startComponent = cs.componentOf(*problem.robots[0].start);
@@ -424,6 +426,7 @@ int main(int argc, char** argv) {
       std::cout << planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "
                 << (r.validation.valid ? "yes" : "no") << "; sub-cell coverage " << formatDouble(r.metrics.subcellCoverage) << "; length "
                 << formatDouble(r.metrics.length) << "; wrote " << out << "\n";
+      if (!r.metrics.coverableSkipped.empty()) std::cerr << "coverkit: note: coverable coverage not computed: " << r.metrics.coverableSkipped << "\n";
       return succeeded(r.plan.status) && r.validation.valid ? 0 : 1;
     }
     if (*eval) {
@@ -452,6 +455,7 @@ int main(int argc, char** argv) {
       mo.cspace = evalSpace ? &*evalSpace : nullptr;
       mo.pathsKnownClear = v.valid;
       const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, mo);
+      if (!m.coverableSkipped.empty()) std::cerr << "coverkit: note: coverable coverage not computed: " << m.coverableSkipped << "\n";
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);
       return v.valid ? 0 : 1;

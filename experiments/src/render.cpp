@@ -149,26 +149,35 @@ std::string pictureBytes(const std::string& file, const PictureContent& c) {
   }
   if (c.paths) {
     const double colors[4][3] = {{0.85, 0.1, 0.1}, {0.1, 0.5, 0.1}, {0.5, 0.1, 0.6}, {0.9, 0.5, 0.0}};
+    // only the part of a path near the map is drawn (a path from another tool may run far outside)
+    const double pad = c.radius + 10 / scale;
+    const BoxD view{x0 - pad, y0 - pad, x0 + w + pad, y0 + h + pad};
     for (std::size_t i = 0; i < c.paths->size(); ++i) {
-      const auto pts = (*c.paths)[i].polyline(0.5 / scale);
-      if (pts.empty()) continue;
+      const auto runs = (*c.paths)[i].polylineWithin(0.5 / scale, view);
+      if (runs.empty()) continue;
       const auto& col = colors[i % 4];
       cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
       cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-      if (c.radius > 0) {  // swept area, faint
-        cairo_set_source_rgba(cr, col[0], col[1], col[2], 0.12);
-        cairo_set_line_width(cr, 2 * c.radius * scale);
+      for (const auto& pts : runs) {
+        if (c.radius > 0) {  // swept area, faint
+          cairo_set_source_rgba(cr, col[0], col[1], col[2], 0.12);
+          cairo_set_line_width(cr, 2 * c.radius * scale);
+          cairo_move_to(cr, X(pts[0].x), Y(pts[0].y));
+          for (const PointD& p : pts) cairo_line_to(cr, X(p.x), Y(p.y));
+          cairo_stroke(cr);
+        }
+        cairo_set_source_rgb(cr, col[0], col[1], col[2]);
+        cairo_set_line_width(cr, 1.6);
         cairo_move_to(cr, X(pts[0].x), Y(pts[0].y));
         for (const PointD& p : pts) cairo_line_to(cr, X(p.x), Y(p.y));
         cairo_stroke(cr);
       }
-      cairo_set_source_rgb(cr, col[0], col[1], col[2]);
-      cairo_set_line_width(cr, 1.6);
-      cairo_move_to(cr, X(pts[0].x), Y(pts[0].y));
-      for (const PointD& p : pts) cairo_line_to(cr, X(p.x), Y(p.y));
-      cairo_stroke(cr);
-      cairo_arc(cr, X(pts[0].x), Y(pts[0].y), 5, 0, 2 * M_PI);
-      cairo_fill(cr);
+      const PointD s0 = (*c.paths)[i].start;
+      if (s0.x >= view.xmin && s0.x <= view.xmax && s0.y >= view.ymin && s0.y <= view.ymax) {
+        cairo_set_source_rgb(cr, col[0], col[1], col[2]);
+        cairo_arc(cr, X(s0.x), Y(s0.y), 5, 0, 2 * M_PI);
+        cairo_fill(cr);
+      }
     }
   }
   if (!c.title.empty()) {

@@ -132,9 +132,29 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
     r1 = std::min(r1, static_cast<long>(rows) - 1);
     for (long r = r0; r <= r1; ++r) crossed[static_cast<std::size_t>(r) * cols + col] = 1;
   };
+  // Fast path: an edge whose two ends lie in the same cell, each certainly inside its open interior
+  // (a double computation with a margin above its rounding error), meets that cell only; the rest
+  // are decided exactly below. Short edges (long coastlines, dense scans) take this path.
+  const double x0d = x0.get_d(), y0d = y0.get_d(), Dd = D.get_d();
+  auto certainCell = [&](double v, double v0, long& idx) {
+    const double t = (v - v0) / Dd;
+    const double err = 8 * 0x1p-53 * ((std::abs(v) + std::abs(v0)) / Dd + std::abs(t));
+    const double f = std::floor(t);
+    if (!std::isfinite(err) || !(t - f > 2 * err && f + 1 - t > 2 * err)) return false;
+    idx = static_cast<long>(f);
+    return true;
+  };
   for (const Edge& e : edges) {
     const Point& a = *e.a;
     const Point& c = *e.b;
+    {
+      long ca, ra, cc, rc;
+      if (certainCell(a.x.get_d(), x0d, ca) && certainCell(c.x.get_d(), x0d, cc) && ca == cc && certainCell(a.y.get_d(), y0d, ra) &&
+          certainCell(c.y.get_d(), y0d, rc) && ra == rc) {
+        if (ca >= 0 && ca < cols && ra >= 0 && ra < rows) crossed[static_cast<std::size_t>(ra) * cols + ca] = 1;
+        continue;
+      }
+    }
     if (a.x == c.x) {
       Rational t = (a.x - x0) / D;
       if (t.get_den() == 1) continue;  // along a column line
@@ -164,7 +184,12 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   auto ymin = [&](const Edge& e) -> const Rational& { return e.a->y < e.b->y ? e.a->y : e.b->y; };
   auto ymax = [&](const Edge& e) -> const Rational& { return e.a->y < e.b->y ? e.b->y : e.a->y; };
-  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return ymin(edges[i]) < ymin(edges[j]); });
+  // sorted by ymin in doubles (exact comparisons of a million rationals cost seconds); an edge
+  // joins the active list once its double ymin is below the row line plus a margin above the
+  // rounding, i.e. possibly a little early, which the exact crossing test below makes harmless
+  std::vector<double> yminD(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) yminD[i] = ymin(edges[i]).get_d();
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return yminD[i] < yminD[j]; });
   // Vertical edges (all of them on grid maps) cross every row line at the same x: their column
   // threshold is computed once instead of once per row.
   std::vector<long> verticalC0(edges.size(), -1);
@@ -176,7 +201,8 @@ CellGrid classifyCells(const Workspace& w, const Rational& D) {
   std::vector<int> flips(static_cast<std::size_t>(cols) + 1);
   for (int row = 0; row < rows; ++row) {
     const Rational yc = y0 + D * (2 * row + 1) / 2;
-    while (next < order.size() && ymin(edges[order[next]]) <= yc) active.push_back(order[next++]);
+    const double ycd = yc.get_d(), margin = 1e-9 * (std::abs(ycd) + Dd);
+    while (next < order.size() && yminD[order[next]] <= ycd + margin) active.push_back(order[next++]);
     active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t i) { return ymax(edges[i]) < yc; }),
                  active.end());
     std::fill(flips.begin(), flips.end(), 0);
@@ -212,6 +238,10 @@ bool strictlyInside(const Workspace& w, const Point& p) {
     for (std::size_t i = 0; i < n; ++i) {
       const Point& a = (*r)[i];
       const Point& c = (*r)[(i + 1) % n];
+      // both ends strictly above or strictly below p: neither on the edge nor crossing the ray
+      // (exact comparisons, no arithmetic: the common case on large maps)
+      const int sa = cmp(a.y, p.y), sc = cmp(c.y, p.y);
+      if (sa == sc && sa != 0) continue;
       // on segment?
       Rational cross = (c.x - a.x) * (p.y - a.y) - (c.y - a.y) * (p.x - a.x);
       if (cross == 0 && std::min(a.x, c.x) <= p.x && p.x <= std::max(a.x, c.x) && std::min(a.y, c.y) <= p.y &&

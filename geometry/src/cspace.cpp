@@ -2,6 +2,7 @@
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/metrics.h>
+#include <coverkit/geometry/sampling.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/General_polygon_set_2.h>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace coverkit {
@@ -111,6 +113,10 @@ struct CSpace::Impl {
   std::vector<CPolygonWithHoles> parts;      ///< components of C-free, largest first
   std::vector<PolygonSet> partSets;          ///< one set per component, for point location
   std::vector<double> areas;
+  /// The closed convention's helpers (cspace.h), built on first use: radius r − δ and 2r − 2δ.
+  std::unique_ptr<CSpace> joined, inner;
+  double delta = 0, epsPrime = 0;
+  std::map<std::vector<int>, std::pair<double, double>> coverable;  ///< components → (area, error)
 };
 
 CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) : impl_(std::make_unique<Impl>()) {
@@ -246,23 +252,70 @@ bool CSpace::arcClear(const Point& from, const Point& to, const Point& center, b
   return true;
 }
 
-double CSpace::coverableArea(int k, double& errorBound) const {
-  errorBound = 0;
-  if (k < 0 || static_cast<std::size_t>(k) >= impl_->parts.size()) return 0;
-  // inner part: the C-space of radius 2r, components lying in k (their vertices are 2r from any
-  // obstacle, hence strictly inside k: a vertex tells which component contains them)
-  const CSpace twice(impl_->workspace, Rational(2 * impl_->radius), impl_->relativeEps);
-  double inner = 0;
-  for (std::size_t i = 0; i < twice.impl_->parts.size(); ++i) {
-    const auto& outer = twice.impl_->parts[i].outer_boundary();
-    if (outer.size() == 0) continue;
-    const auto& v = outer.curves_begin()->source();
-    const Point p{exactFromDouble(CGAL::to_double(v.x())), exactFromDouble(CGAL::to_double(v.y()))};
-    if (componentOf(p) == k) inner += twice.impl_->areas[i];
+namespace {
+
+/// The closed convention's helper C-spaces (cspace.h): radius r − δ (connectivity, the region K)
+/// and 2r − 2δ (K's part farther than r from K's boundary), with eps' = min(eps, r/64), δ = 4·eps'.
+struct ClosedHelpers {
+  std::unique_ptr<CSpace> joined, inner;
+  double delta = 0, epsPrime = 0;
+};
+
+ClosedHelpers closedHelpers(const Workspace& w, const Rational& r, double relativeEps, bool wantInner) {
+  ClosedHelpers h;
+  const Box b = w.bbox();
+  const double extent = std::max(std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d()), 1e-12);
+  Rational delta = 0;
+  double relEps = relativeEps;
+  if (r > 0) {
+    h.epsPrime = std::min(relativeEps * extent, r.get_d() / 64);
+    relEps = h.epsPrime / extent;
+    delta = 4 * exactFromDouble(h.epsPrime);  // > the helpers' eps (relEps·extent rounds within an ulp of eps')
+    h.delta = delta.get_d();
   }
-  // band: points within r of k's boundary
+  h.joined = std::make_unique<CSpace>(w, Rational(r - delta), relEps);
+  if (wantInner) h.inner = std::make_unique<CSpace>(w, Rational(2 * r - 2 * delta), relEps);
+  return h;
+}
+
+double loopLength(const CurveLoop& l) {
+  double len = 0;
+  for (const PathSegment& s : l.pieces) len += s.length();
+  return len;
+}
+
+/// The components of `joined` holding the starts, sorted, without repeats.
+std::vector<int> startComponents(const CSpace& joined, const std::vector<Point>& starts) {
+  std::vector<int> ks;
+  for (const Point& s : starts) {
+    const int k = joined.componentOf(s);
+    if (k >= 0 && std::find(ks.begin(), ks.end(), k) == ks.end()) ks.push_back(k);
+  }
+  std::sort(ks.begin(), ks.end());
+  return ks;
+}
+
+/// coverableArea (cspace.h) from the helpers, for the components `ks` of `joined`.
+double coverableFrom(const Workspace& w, const Rational& r, const CSpace& joined, const CSpace& innerSpace, double delta,
+                     double epsPrime, const std::vector<int>& ks, double& errorBound) {
+  errorBound = 0;
+  if (ks.empty()) return 0;
+  auto inK = [&](int k) { return std::find(ks.begin(), ks.end(), k) != ks.end(); };
+  // K's part farther than r from its boundary: components of the C-space of radius 2r − 2δ lying in
+  // K (their points are >= 2r − 2δ > r − δ + eps' from any obstacle, inside K's interior: one vertex
+  // tells which component holds them)
+  double inner = 0, perimeter = 0;
+  for (const CurveRegion& c : innerSpace.components()) {
+    if (c.outer.pieces.empty()) continue;
+    const PointD v = c.outer.pieces.front().from;
+    if (!inK(joined.componentOf({exactFromDouble(v.x), exactFromDouble(v.y)}))) continue;
+    inner += c.area;
+    perimeter += loopLength(c.outer);
+    for (const CurveLoop& l : c.holes) perimeter += loopLength(l);
+  }
+  // F ∩ (∂K ⊕ disc(r)), rasterised with its bound
   std::vector<Path> loops;
-  const CurveRegion region = regionOf(impl_->parts[static_cast<std::size_t>(k)]);
+  const std::vector<CurveRegion> comps = joined.components();
   auto add = [&](const CurveLoop& l) {
     if (l.pieces.empty()) return;
     Path p;
@@ -270,10 +323,77 @@ double CSpace::coverableArea(int k, double& errorBound) const {
     p.segments = l.pieces;
     loops.push_back(std::move(p));
   };
-  add(region.outer);
-  for (const CurveLoop& h : region.holes) add(h);
-  const double band = rasterCoveredArea(impl_->workspace, impl_->radius, loops, 4'000'000, errorBound);
+  for (int k : ks) {
+    add(comps[static_cast<std::size_t>(k)].outer);
+    for (const CurveLoop& l : comps[static_cast<std::size_t>(k)].holes) add(l);
+  }
+  const double band = rasterCoveredArea(w, r, loops, 4'000'000, errorBound);
+  // the two parts overlap where a point of the first lies within r of ∂K: within δ + eps' of its
+  // own boundary (an inner band; its boundary arcs have radius 2r − 2δ, so the band is at most
+  // width × perimeter × (1 + width / (2r − 2δ)))
+  const double width = delta + epsPrime, rin = 2 * r.get_d() - 2 * delta;
+  if (rin > 0) errorBound += width * perimeter * (1 + width / rin);
   return inner + band;
+}
+
+}  // namespace
+
+double coverableArea(const Workspace& w, const Rational& radius, const std::vector<Point>& starts, double& errorBound,
+                     double relativeEps) {
+  errorBound = 0;
+  if (radius < 0) throw InputError(w.name, "radius", "robot radius must be >= 0");
+  const ClosedHelpers h = closedHelpers(w, radius, relativeEps, true);
+  return coverableFrom(w, radius, *h.joined, *h.inner, h.delta, h.epsPrime, startComponents(*h.joined, starts), errorBound);
+}
+
+int CSpace::closedComponentOf(const Point& p) const {
+  if (!impl_->joined) {
+    ClosedHelpers h = closedHelpers(impl_->workspace, impl_->radius, impl_->relativeEps, false);
+    impl_->joined = std::move(h.joined);
+    impl_->delta = h.delta;
+    impl_->epsPrime = h.epsPrime;
+  }
+  return impl_->joined->componentOf(p);
+}
+
+double CSpace::closedMargin() const {
+  if (!impl_->joined) closedComponentOf(Point{impl_->workspace.regions.front().outer.front()});
+  return impl_->delta;
+}
+
+double CSpace::coverableArea(const std::vector<Point>& starts, double& errorBound) const {
+  if (!impl_->inner) {
+    ClosedHelpers h = closedHelpers(impl_->workspace, impl_->radius, impl_->relativeEps, true);
+    impl_->joined = std::move(h.joined);
+    impl_->inner = std::move(h.inner);
+    impl_->delta = h.delta;
+    impl_->epsPrime = h.epsPrime;
+  }
+  // the same components give the same region: kept (plans of several planners on one C-space)
+  const std::vector<int> ks = startComponents(*impl_->joined, starts);
+  auto it = impl_->coverable.find(ks);
+  if (it == impl_->coverable.end()) {
+    double err = 0;
+    const double a = coverableFrom(impl_->workspace, impl_->radius, *impl_->joined, *impl_->inner, impl_->delta, impl_->epsPrime, ks, err);
+    it = impl_->coverable.emplace(ks, std::make_pair(a, err)).first;
+  }
+  errorBound = it->second.second;
+  return it->second.first;
+}
+
+std::vector<CSpace::SampledComponent> CSpace::sampledComponents(double tolerance) const {
+  // radius r + 4·eps: its C-free lies in the exact C-free of radius r with room to spare for the
+  // approximation and for rounding, and gaps exactly 2r wide no longer pinch it to a point
+  const CSpace grown(impl_->workspace, Rational(impl_->radius + 4 * exactFromDouble(impl_->eps)), impl_->relativeEps);
+  const std::vector<CurveRegion> comps = grown.components();
+  std::vector<SampledRegion> sampled = sampleFreeRegions(comps, impl_->workspace, impl_->radius, tolerance);
+  std::vector<SampledComponent> out;
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (sampled[i].outer.empty() || comps[i].outer.pieces.empty()) continue;
+    const PointD v = comps[i].outer.pieces.front().from;  // > r from the obstacles: inside one component
+    out.push_back({componentOf({exactFromDouble(v.x), exactFromDouble(v.y)}), std::move(sampled[i])});
+  }
+  return out;
 }
 
 CellState CSpaceCells::mega(int col, int row) const {

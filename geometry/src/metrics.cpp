@@ -130,19 +130,19 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   double swept = 0;
   for (const Path& p : paths) swept += 2 * r * p.length() + M_PI * r * r;
   m.sweptAreaOverlap = area > 0 ? swept / area - 1 : 0;
-  if (o.coverable) {
-    std::optional<CSpace> own;
-    if (!o.cspace) own.emplace(problem.workspace, problem.robots.at(0).radius);
-    const CSpace& cs = o.cspace ? *o.cspace : *own;
-    std::vector<int> seen;
-    for (const Path& p : paths) {
-      const int k = cs.componentOf({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
-      if (k < 0 || std::find(seen.begin(), seen.end(), k) != seen.end()) continue;
-      seen.push_back(k);
-      double err = 0;
-      m.coverableArea += cs.coverableArea(k, err);
-      m.coverableAreaError += err;
-    }
+  const std::size_t vertices = problem.workspace.vertexCount();
+  if (o.coverable && !o.cspace && vertices > o.coverableMaxVertices) {
+    m.coverableSkipped = "the workspace has " + std::to_string(vertices) + " vertices, more than " +
+                         std::to_string(o.coverableMaxVertices) + " (the C-space would cost minutes)";
+  } else if (o.coverable) {
+    // the closed convention (cspace.h): the closed C-free components holding the starts, found on
+    // the C-space of radius r − δ, so that everything a valid path sweeps lies in the region
+    std::vector<Point> starts;
+    for (const Path& p : paths) starts.push_back({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
+    double err = 0;
+    m.coverableArea = o.cspace ? o.cspace->coverableArea(starts, err)
+                               : coverableArea(problem.workspace, problem.robots.at(0).radius, starts, err);
+    m.coverableAreaError = err;
     m.hasCoverable = true;
     m.coverableCoverage = m.coverableArea > 0 ? area / m.coverableArea : 0;
   }
@@ -150,6 +150,14 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
 }
 
 namespace {
+
+/// The squared distance from p to segment ab (doubles; the raster's estimate, never a decision).
+inline double pointSegDist2(double px, double py, double ax, double ay, double bx, double by) {
+  const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / l2, 0.0, 1.0) : 0;
+  const double ex = px - (ax + t * dx), ey = py - (ay + t * dy);
+  return ex * ex + ey * ey;
+}
 
 /// Bucket grid over the path's straight pieces (arcs flattened), for distance queries.
 class PieceGrid {
@@ -173,16 +181,20 @@ public:
         }
       }
   }
-  /// Distance from (x, y) to the path, or a value above `limit` when it is farther than `limit`.
-  double distance(double x, double y, double limit) const {
+  /// Distance from (x, y) to the path, or a value above `limit` when it is farther than `limit`;
+  /// the search stops at the first piece within `enough` (the caller needs no more: the square is
+  /// covered). Squared distances inside, one square root at the end.
+  double distance(double x, double y, double limit, double enough) const {
     double best = std::numeric_limits<double>::infinity();
+    const double enough2 = enough > 0 ? enough * enough : -1;
     for (int j = by(y - limit); j <= by(y + limit); ++j)
       for (int q = bx(x - limit); q <= bx(x + limit); ++q)
         for (std::size_t k : buckets_[static_cast<std::size_t>(j) * nx_ + q]) {
           const auto& s = pieces_[k];
-          best = std::min(best, detail::pointSegDist(x, y, s[0], s[1], s[2], s[3]));
+          best = std::min(best, pointSegDist2(x, y, s[0], s[1], s[2], s[3]));
+          if (best <= enough2) return std::sqrt(best);
         }
-    return best;
+    return std::sqrt(best);
   }
 
 private:
@@ -239,12 +251,24 @@ double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::
   // level 0: pixel centres inside W by row parity
   std::vector<Square> level;
   {
+    // each edge listed under the rows whose centre line it may cross (one more row each side for
+    // rounding; the crossing test below decides): O(edges + crossings), not rows × edges
+    std::vector<std::vector<std::size_t>> rowEdges(static_cast<std::size_t>(ny));
+    for (std::size_t k = 0; k < edges.edges().size(); ++k) {
+      const auto& e = edges.edges()[k];
+      const double lo = (std::min(e.ay, e.by) - y0) / h0 - 0.5, hi = (std::max(e.ay, e.by) - y0) / h0 - 0.5;
+      const long j0 = std::max(0L, static_cast<long>(std::floor(std::max(lo, -1.0))) - 1);
+      const long j1 = std::min(static_cast<long>(ny) - 1, static_cast<long>(std::ceil(std::min(hi, static_cast<double>(ny)))) + 1);
+      for (long j = j0; j <= j1; ++j) rowEdges[static_cast<std::size_t>(j)].push_back(k);
+    }
     std::vector<double> xs;
     for (int j = 0; j < ny; ++j) {
       const double cy = y0 + (j + 0.5) * h0;
       xs.clear();
-      for (const auto& e : edges.edges())
+      for (std::size_t k : rowEdges[static_cast<std::size_t>(j)]) {
+        const auto& e = edges.edges()[k];
         if ((e.ay > cy) != (e.by > cy)) xs.push_back(e.ax + (cy - e.ay) * (e.bx - e.ax) / (e.by - e.ay));
+      }
       std::sort(xs.begin(), xs.end());
       std::size_t q = 0;
       for (int i = 0; i < nx; ++i) {
@@ -267,7 +291,7 @@ double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::
       const bool nearB = !knownSide && nearBoundary(s.cx, s.cy, e + slack);
       const bool inside = (lev == 0 || knownSide) ? s.inside == 1 : insideW(s.cx, s.cy);
       if (!nearB && !inside) continue;
-      const double d = pieces.distance(s.cx, s.cy, r + e + slack);
+      const double d = pieces.distance(s.cx, s.cy, r + e + slack, nearB ? 0 : r - e - slack);
       if (d > r + e + slack) continue;                            // wholly uncovered
       if (!nearB && d <= r - e - slack) { covered += area; continue; }  // wholly covered
       if (last) {

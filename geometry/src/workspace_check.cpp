@@ -13,16 +13,35 @@ namespace coverkit {
 
 namespace {
 
-int orient(const Point& a, const Point& b, const Point& c) {
-  const Rational v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+/// A vertex with its coordinates rounded to doubles once (mpq_get_d divides: costly in a hot loop).
+struct V {
+  const Point* p;
+  double x, y;
+};
+V vd(const Point& p) { return {&p, p.x.get_d(), p.y.get_d()}; }
+
+/// Sign of the orientation of (a, b, c). A static double filter first: the coordinates rounded to
+/// doubles are each within 2^-52 |x| ≤ δM of the exact ones (M the largest magnitude), so the
+/// computed determinant is within about 40 δ M² of the exact one (differences, products, one more
+/// subtraction); a value beyond 64 δ M² has the exact sign. Otherwise, and for non-finite doubles,
+/// the exact rational determinant decides.
+int orient(const V& a, const V& b, const V& c) {
+  if (c.p == a.p || c.p == b.p || a.p == b.p) return 0;  // a shared vertex of two edges
+  const double det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  const double M = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y), std::abs(c.x), std::abs(c.y)});
+  const double bound = 64 * 0x1p-52 * M * M;
+  if (std::isfinite(bound) && std::abs(det) > bound) return det > 0 ? 1 : -1;
+  const Point &pa = *a.p, &pb = *b.p, &pc = *c.p;
+  const Rational v = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
   return sgn(v);
 }
 bool onSegment(const Point& a, const Point& b, const Point& p) {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }
 /// 0: disjoint, 1: touch only at a shared endpoint, 2: any other contact.
-int contact(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+int contact(const V& va, const V& vb, const V& vc, const V& vd) {
+  const int o1 = orient(va, vb, vc), o2 = orient(va, vb, vd), o3 = orient(vc, vd, va), o4 = orient(vc, vd, vb);
+  const Point &a = *va.p, &b = *vb.p, &c = *vc.p, &d = *vd.p;
   bool meet = false;
   if (o1 * o2 < 0 && o3 * o4 < 0) return 2;
   if (o1 == 0 && onSegment(a, b, c)) meet = true;
@@ -66,8 +85,7 @@ static const Rational kMaxCoordinate("1000000000000000");
 void checkWorkspace(const Workspace& w) {
   if (w.regions.empty()) throw InputError(w.name, "workspace", "no polygon: the free space is empty");
   struct E {
-    const Point* a;
-    const Point* b;
+    V a, b;
     std::size_t region;
     int hole;
     std::size_t idx;
@@ -87,13 +105,11 @@ void checkWorkspace(const Workspace& w) {
         if (ring[i] == ring[(i + 1) % ring.size()])
           throw InputError(w.name, where(ri, h, i), "repeated vertex");
       bool collinear = true;
-      for (std::size_t i = 2; i < ring.size() && collinear; ++i) collinear = orient(ring[0], ring[1], ring[i]) == 0;
+      for (std::size_t i = 2; i < ring.size() && collinear; ++i) collinear = orient(vd(ring[0]), vd(ring[1]), vd(ring[i])) == 0;
       if (collinear) throw InputError(w.name, where(ri, h, 0), "ring has zero area (all vertices on one line)");
       for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Point& a = ring[i];
-        const Point& b = ring[(i + 1) % ring.size()];
-        edges.push_back({&a, &b, ri, h, i, std::min(a.x.get_d(), b.x.get_d()), std::min(a.y.get_d(), b.y.get_d()),
-                         std::max(a.x.get_d(), b.x.get_d()), std::max(a.y.get_d(), b.y.get_d())});
+        const V a = vd(ring[i]), b = vd(ring[(i + 1) % ring.size()]);
+        edges.push_back({a, b, ri, h, i, std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)});
       }
     }
   }
@@ -110,7 +126,7 @@ void checkWorkspace(const Workspace& w) {
     for (std::size_t k : active) {
       const E& f = edges[k];
       if (f.y1 < e.y0 - eps * (1 + std::abs(e.y0)) || e.y1 < f.y0 - eps * (1 + std::abs(f.y0))) continue;
-      const int c = contact(*e.a, *e.b, *f.a, *f.b);
+      const int c = contact(e.a, e.b, f.a, f.b);
       if (c == 0) continue;
       const bool sameRing = e.region == f.region && e.hole == f.hole;
       if (c == 1) {

@@ -140,12 +140,13 @@ void checkProblem(const Problem& problem) {
   if (problem.robots.empty()) throw InputError(name, "robots", "no robot");
   if (problem.workspace.regions.empty()) throw InputError(name, "workspace", "empty free space");
   const Box b = problem.workspace.bbox();
-  // paths, pictures and metrics are doubles, and squared distances must not overflow one
-  static const Rational coordinateLimit(mpz_class("1" + std::string(150, '0')));
+  // paths, pictures and metrics are doubles: at 1e15 a double's spacing is 0.125 map units (the
+  // polygon readers refuse such coordinates already, checkWorkspace; grid maps are checked here)
+  static const Rational coordinateLimit(mpz_class("1" + std::string(15, '0')));
   for (const Rational* v : {&b.xmin, &b.xmax, &b.ymin, &b.ymax})
     if (abs(*v) > coordinateLimit)
       throw InputError(name, "coordinates", "a coordinate of magnitude about 10^" + std::to_string(mpz_sizeinbase(mpz_class(abs(*v)).get_mpz_t(), 10) - 1) +
-                                                " is beyond the limit of 10^150 (paths are written in doubles and their squared distances must fit one)");
+                                                " is beyond the limit of 10^15 (paths are written in doubles, which cannot resolve the map out there)");
   for (std::size_t i = 0; i < problem.robots.size(); ++i) {
     const Robot& r = problem.robots[i];
     if (r.radius <= 0) throw InputError("--radius", shortText(r.radius), "robot radius must be > 0");

@@ -108,8 +108,8 @@ expect_bad "--picture is a folder" "folder.png: --picture: is a folder, not a fi
 expect_bad "--out under a file" "existing.json/x.json: --out: folder '$T/existing.json' is not a folder" $(p) --out "$T/existing.json/x.json"
 expect_bad "--out without a name" "--out: no file name given" $(p) --out ""
 expect_bad "--out with an unknown extension, existing --picture" "unknown output format '.txt'" $(p) --out "$T/x.txt" --picture "$T/existing.png"
-expect_bad "coordinates 1e400 (beyond a double), existing --out and --picture" "huge.wkt: coordinates: a coordinate of magnitude about 10^400 is beyond the limit of 10^150" plan --planner stc --radius 1e399 --map "$T/huge.wkt" --out "$T/existing.json" --picture "$T/existing.png"
-expect_bad "a second polygon at x = 1e400" "far.wkt: coordinates: a coordinate of magnitude about 10^400 is beyond the limit of 10^150" plan --planner stc --radius 0.25 --map "$T/far.wkt" --out "$T/existing.json"
+expect_bad "coordinates 1e400 (beyond a double), existing --out and --picture" "huge.wkt: polygon 1 outer ring vertex 2: coordinate beyond ±1e15" plan --planner stc --radius 1e399 --map "$T/huge.wkt" --out "$T/existing.json" --picture "$T/existing.png"
+expect_bad "a second polygon at x = 1e400" "far.wkt: polygon 2 outer ring vertex 1: coordinate beyond ±1e15" plan --planner stc --radius 0.25 --map "$T/far.wkt" --out "$T/existing.json"
 expect_bad "radius 1e-300: cell grid beyond the limit" "--radius: 1e-300: the sub-cell grid would have 5e+300 × 5e+300 sub-cells of size D = 2e-300 (2r) over the 10 × 10 bounding box of $T/room.wkt, more than the limit of 2e+08 sub-cells" plan --planner stc --radius 1e-300 --map "$T/room.wkt" --out "$T/existing.json" --picture "$T/existing.png"
 expect_bad "cell size 1e-6: cell grid beyond the limit" "--cell-size: 1e-06: the sub-cell grid would have 1e+07 × 1e+07 sub-cells" plan --planner stc --radius 1e-7 --cell-size 1e-6 --map "$T/room.wkt" --out "$T/existing.json"
 expect_bad "render: radius 1e-300" "--radius: 1e-300: the sub-cell grid would have" render --radius 1e-300 --map "$T/room.wkt" --out "$T/existing.png"
@@ -121,7 +121,7 @@ expect_bad "--time-limit 1e300" "--time-limit: 1e300: must be a finite number of
 expect_bad "--time-limit not a number" "--time-limit: 10s: not a number of seconds" $(p) --out "$T/existing.json" --time-limit 10s
 expect_bad "cspace: --picture in a missing folder, existing --out" "p.png: --picture: folder '$T/missing-folder' does not exist" cspace --map "$T/room.wkt" --radius 0.25 --out "$T/existing.json" --picture "$T/missing-folder/p.png"
 expect_bad "cspace: --out in a missing folder" "--out: folder '$T/missing-folder' does not exist" cspace --map "$T/room.wkt" --radius 0.25 --out "$T/missing-folder/c.json"
-expect_bad "cspace: coordinates 1e400" "is beyond the limit of 10^150" cspace --map "$T/huge.wkt" --radius 1 --out "$T/existing.json" --picture "$T/existing.png"
+expect_bad "cspace: coordinates 1e400" "coordinate beyond ±1e15" cspace --map "$T/huge.wkt" --radius 1 --out "$T/existing.json" --picture "$T/existing.png"
 expect_bad "render: --out in a missing folder" "--out: folder '$T/missing-folder' does not exist" render --map "$T/room.wkt" --radius 0.25 --out "$T/missing-folder/r.png"
 expect_bad "render: --out is a folder" "folder.png: --out: is a folder, not a file" render --map "$T/room.wkt" --radius 0.25 --out "$T/folder.png"
 expect_bad "render: --out with an unknown extension" "r.jpg: --out: unknown picture format '.jpg' (expected .png or .svg)" render --map "$T/room.wkt" --radius 0.25 --out "$T/r.jpg"
@@ -189,6 +189,22 @@ expect_bad "--check without a config" "--check: tracc-scenarios: only for the ex
 # an experiment's --out folder is created with its parents
 "$CK" experiment sweep --config "$T/cfg-good.yaml" --out "$T/new/deeper" > /dev/null && [ -s "$T/new/deeper/results.csv" ] && ok || bad "sweep into a new nested folder"
 # ---------------------------------------------------------------------------------------------
+
+# evaluate's verdict on pieces far outside the map (issue 12): invalid (exit 1), in seconds
+printf 'POLYGON((0 0,10 0,10 10,0 10,0 0),(4 4,4 6,6 6,6 4,4 4))' > "$T/room10.wkt"
+far_case() {  # name, segment JSON
+  printf '{"format":"coverkit.path/1","robot_radius":0.25,"robots":[{"start":[1,1],"segments":[%s]}]}' "$2" > "$T/far.json"
+  timeout 60 "$CK" evaluate --map "$T/room10.wkt" --path "$T/far.json" > "$T/far.out" 2>&1
+  local rc=$?
+  [ $rc -eq 1 ] && grep -q 'valid: no' "$T/far.out" && ok || bad "evaluate $1: exit $rc, $(head -2 "$T/far.out")"
+}
+for c in 1e150 1e160 1e200 1e300; do
+  far_case "arc about ($c, 1) the long way" '{"type":"arc","from":[1,1],"to":[1,1.5],"center":['$c',1],"ccw":true}'
+done
+far_case "segment to x = 7.2e9" '{"type":"line","from":[1,1],"to":[7.2e9,1]}'
+far_case "near-full circle of radius 2e154" '{"type":"arc","from":[1,1],"to":[1,1.0000000000000002],"center":[2e154,1],"ccw":true}'
+far_case "arc of radius 1e7" '{"type":"arc","from":[1,1],"to":[1,1.5],"center":[1e7,1],"ccw":true}'
+far_case "arc of radius 1e12" '{"type":"arc","from":[1,1],"to":[1,1.5],"center":[1e12,1],"ccw":true}'
 
 # good input
 if "$CK" plan --planner stc --radius 0.25 --map "$DATA/pillars.wkt" --out "$T/good.json" --picture "$T/good.svg" > "$T/stdout"; then ok; else bad "plan failed"; fi
@@ -270,6 +286,8 @@ done
 printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\000\000\005\000\000\000\005\020\006\000\000\000\335\377\372\246\000\000\000\026\111\104\101\124\170\332\143\370\117\044\140\040\133\341\176\060\244\246\211\270\000\000\173\132\306\171\020\306\252\277\000\000\000\000\111\105\116\104\256\102\140\202' > "$T/rgba16.png"
 printf 'image: rgba16.png\nresolution: 1\norigin: [0, 0, 0]\n' > "$T/rgba16.yaml"
 "$CK" cspace --map "$T/rgba16.yaml" --radius 0.01 --out "$T/rgba16-cspace.json" > "$T/rgba16.out" 2>&1 && grep -q 'of free area 24 ' "$T/rgba16.out" && ok || bad "16-bit RGBA map: $(cat "$T/rgba16.out")"
+printf 'image: rgba16.png\nresolution: 1\norigin: [1e300, 0, 0]\n' > "$T/farorigin.yaml"
+expect_bad "a ROS map whose origin is at 1e300" "coordinates: a coordinate of magnitude about 10^300 is beyond the limit of 10^15" plan --planner stc --radius 0.25 --map "$T/farorigin.yaml" --out "$T/existing.json"
 # 165 bytes announcing 100000 x 100000 pixels
 printf '\211\120\116\107\015\012\032\012\000\000\000\015\111\110\104\122\000\001\206\240\000\001\206\240\010\000\000\000\000\215\071\124\024\000\000\000\170\111\104\101\124\170\332\354\301\041\001\000\000\000\002\040\377\237\326\033\006\040\005\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\156\015\000\000\377\377\131\223\353\253' > "$T/huge.png"
 printf 'image: huge.png\nresolution: 0.05\norigin: [0, 0, 0]\n' > "$T/huge.yaml"

@@ -2,6 +2,8 @@
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/geometry/error.h>
 
+#include "helpers/checkers.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -32,14 +34,7 @@ std::size_t temporaries(const fs::path& d) {
   for (const auto& e : fs::recursive_directory_iterator(d)) n += e.path().string().find("tmp-coverkit") != std::string::npos;
   return n;
 }
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string messageOf(const std::function<void()>& f) { return testing_helpers::inputErrorMessage(f); }
 }  // namespace
 
 TEST(OutputBatch, WritesEveryFileAndLeavesNoTemporary) {

@@ -59,7 +59,19 @@ TEST(CSpace, GapsNarrowerThanTheDiscCloseAndTwoRExactlyIsClosed) {
   const Rational r(1, 2);
   EXPECT_EQ(CSpace(rooms(Rational(101, 100)), r).componentCount(), 1u);
   EXPECT_EQ(CSpace(rooms(Rational(99, 100)), r).componentCount(), 2u);
-  EXPECT_EQ(CSpace(rooms(Rational(1)), r).componentCount(), 2u);  // g = 2r: closed, by decision
+  // g = 2r: the polygons (an inner approximation) drop the zero-width passage, but the closed C-free
+  // (the validator's convention) passes it: one closed component
+  const CSpace exactGap(rooms(Rational(1)), r);
+  EXPECT_EQ(exactGap.componentCount(), 2u);
+  const Point left{Rational(1), Rational(2)}, right{Rational(9), Rational(2)};
+  EXPECT_GE(exactGap.closedComponentOf(left), 0);
+  EXPECT_EQ(exactGap.closedComponentOf(left), exactGap.closedComponentOf(right));
+  EXPECT_GE(exactGap.closedComponentOf({Rational(5), Rational(2)}), 0);  // the neck's centre line is free
+  const CSpace narrower(rooms(Rational(99, 100)), r);
+  EXPECT_NE(narrower.closedComponentOf(left), narrower.closedComponentOf(right));
+  EXPECT_EQ(narrower.closedComponentOf({Rational(5), Rational(2)}), -1);
+  EXPECT_GT(exactGap.closedMargin(), 0);
+  EXPECT_LT(exactGap.closedMargin(), 1e-4);
 }
 
 TEST(CSpace, ObstaclesMergeWhenTheGapIsBelowTwoR) {
@@ -229,11 +241,14 @@ TEST(CSpace, CoverableAreaOfARoomWithAPillar) {
   const Rational r(1, 2);
   const CSpace cs(boxWith({{{4, 4}, {6, 4}, {6, 6}, {4, 6}}}), r, 1e-12);
   double err = 0;
-  const double a = cs.coverableArea(0, err);
+  const double a = cs.coverableArea({{Rational(1), Rational(1)}}, err);
   const double expected = 100 - 4 - 4 * (1 - M_PI / 4) * 0.25;
   EXPECT_LE(std::abs(a - expected), err + 1e-9);
   EXPECT_LT(err, 0.01 * expected);
-  EXPECT_EQ(cs.coverableArea(7, err), 0);  // no such component
+  double err2 = 0;
+  EXPECT_DOUBLE_EQ(coverableArea(boxWith({{{4, 4}, {6, 4}, {6, 6}, {4, 6}}}), r, {{Rational(1), Rational(1)}}, err2, 1e-12),
+                   a);  // the same without a C-space of radius r
+  EXPECT_EQ(cs.coverableArea({{Rational(5), Rational(5)}}, err), 0);  // a start in no component
 }
 
 TEST(CSpace, ClearanceAgainstCObstaclesIsConservativeAndExactOnStraightWalls) {

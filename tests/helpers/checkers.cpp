@@ -1,5 +1,6 @@
 #include "helpers/checkers.h"
 
+#include <coverkit/geometry/error.h>
 #include <coverkit/datasets/path_io.h>
 
 #include <cmath>
@@ -162,6 +163,15 @@ planners::PlanningContext contextFor(const Workspace& w, const Rational& radius,
   p.workspace = w;
   p.robots.push_back({radius, start});
   return planners::makeContext(p);
+}
+
+std::string inputErrorMessage(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace coverkit::testing_helpers

@@ -6,9 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <string>
 
 namespace coverkit::testing_helpers {
+
+/// The message of the InputError that f throws (empty when it throws none).
+std::string inputErrorMessage(const std::function<void()>& f);
 
 /// The plan succeeded and the independent validator accepts every path.
 ::testing::AssertionResult planIsValid(const planners::PlanningContext& ctx, const Plan& plan);

@@ -20,9 +20,14 @@ struct PathDocument {
   std::vector<Path> paths;                            ///< one per robot
   std::vector<std::pair<std::string, double>> metrics;   ///< name → value, written in order
   std::vector<std::pair<std::string, double>> statistics;
+  /// The workspace the paths were planned in (optional, not owned). CSV and GeoJSON replace arcs by
+  /// lines: with the workspace, on the side the exact clearance test accepts; without it, outside
+  /// the arcs' circles (docs/formats.md).
+  const Workspace* workspace = nullptr;
 };
 
-/// Arc sampling tolerance used for CSV and GeoJSON output (map units).
+/// Arc sampling tolerance used for CSV and GeoJSON output (map units): every line lies within it of
+/// the arc it replaces, on the arc's safe side (geometry/sampling.h).
 constexpr double kArcSampleTolerance = 1e-3;
 
 /// Metric name → value, in a fixed order (the keys of the JSON "metrics" object).
@@ -43,6 +48,10 @@ struct CSpaceDocument {
   std::optional<PointD> start;
   int startComponent = -1;
   std::vector<CurveRegion> components, obstacles;
+  /// The C-space the components came from (optional, not owned): with it, the GeoJSON's C-free
+  /// polygons are CSpace::sampledComponents, checked to lie in the exact C-free (docs/formats.md);
+  /// without it, the components' arcs are replaced outside their circles, unchecked.
+  const CSpace* cspace = nullptr;
 };
 void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc);
 

@@ -10,9 +10,24 @@
 // and the C-free used here is contained in the exact C-free: whatever it calls free is free.
 // eps defaults to 1e-6 × the workspace's extent (docs/architecture.md has the measured choice).
 //
-// Decision: two obstacles exactly 2r apart leave no passage. In exact arithmetic the gap is a single
-// point of C-free; the conservative approximation closes it, and a path through it would have zero
-// margin anyway.
+// Decision (issue 12, "one convention for narrow gaps"): C-free is CLOSED, for the C-space, the
+// validator and the metrics alike: a centre is free when its distance to every obstacle (and to W's
+// boundary) is >= r, so the disc may touch both sides of a gap exactly 2r wide and pass through it.
+// That is what the validator has always accepted (distance >= r is valid), and what the STC family
+// does in corridors one 2r sub-cell wide (Moving AI mazes and rooms).
+//  - The polygons this class holds are an INNER approximation of that closed set: regularised
+//    Boolean operations drop its zero-width parts (the centre line of a corridor exactly 2r wide, the
+//    point between two corners exactly 2r apart), and the approximated offsets close gaps up to 2·eps
+//    wider. So `componentOf`, `segmentClear`, `arcClear`, `classify` and `sweeps` stay one-sided:
+//    what they call free is free exactly (the planners' checks, Smooth-STC's sweeps included, never
+//    pass through a gap of exactly 2r; the STC grid does, on exact cells, and the validator accepts it).
+//  - Connectivity and the coverable region follow the closed set: `closedComponentOf` and
+//    `coverableArea` use the C-space of radius r − δ, δ = 4·eps' (eps' = min(eps, r/64), the
+//    approximation bound of those helper C-spaces). Every point of the closed C-free of radius r lies
+//    in the interior of that C-space (its points are >= r > r − δ + eps' from the obstacles), so a
+//    valid path never leaves one of its components, and (component ⊕ disc(r)) ∩ F contains all it can
+//    sweep: coverable coverage <= 1 up to the stated error bounds (docs/metrics.md). The price: gaps
+//    narrower than 2r by less than 2δ (about 1e-5 of the map's extent) count as open.
 #include <coverkit/geometry/cell_grid.h>
 #include <coverkit/geometry/path.h>
 
@@ -20,6 +35,11 @@
 #include <vector>
 
 namespace coverkit {
+
+/// The coverable region of `CSpace::coverableArea` without a C-space of radius r at hand (it is not
+/// needed: only the helper C-spaces of radius r − δ and 2r − 2δ are built).
+double coverableArea(const Workspace& w, const Rational& radius, const std::vector<Point>& starts, double& errorBound,
+                     double relativeEps = 1e-6);
 
 /// A closed boundary of line segments and circular arcs, in doubles (for output and pictures).
 struct CurveLoop {
@@ -31,6 +51,13 @@ struct CurveRegion {
   CurveLoop outer;
   std::vector<CurveLoop> holes;
   double area = 0;
+};
+
+/// A region as rings of doubles (line segments only): outer counter-clockwise, holes clockwise, the
+/// first point not repeated. geometry/sampling.h makes them.
+struct SampledRegion {
+  std::vector<PointD> outer;
+  std::vector<std::vector<PointD>> holes;
 };
 
 /// Cells classified by C-space (the robot's centre), with the C-free contour of every partial
@@ -92,11 +119,36 @@ public:
   /// the ray through `to`; `from == to` is the full circle.
   bool arcClear(const Point& from, const Point& to, const Point& center, bool ccw) const;
 
-  /// The area of the coverable region of component `k`: k ⊕ disc(r), everything a robot whose
-  /// centre stays in k could sweep. Computed as area(k ⊖ disc(r)) (the components of the C-space of
-  /// radius 2r that lie in k; constructed exactly, conservatively) plus area(∂k ⊕ disc(r))
-  /// (rasterised with a rigorous bound, returned in `errorBound`); the two are disjoint.
-  double coverableArea(int k, double& errorBound) const;
+  /// The closed component holding p: components of the closed C-free (distance >= r), joined where
+  /// their closures touch (a gap exactly 2r wide, two corners exactly 2r apart), found as the
+  /// components of the C-space of radius r − δ (see the decision above). Returns an index into those
+  /// components, not into `components()`, or −1 when p is within r − δ of an obstacle (roughly).
+  /// Built on first use.
+  int closedComponentOf(const Point& p) const;
+  /// δ of the closed convention (above): the helper C-spaces use radius r − δ and 2r − 2δ.
+  double closedMargin() const;
+
+  /// The area of the coverable region of the closed components holding `starts`: K ⊕ disc(r) ∩ F,
+  /// K those components of the C-space of radius r − δ; it contains everything a valid path (the
+  /// exact validator's closed convention) from one of the starts can sweep. Computed as the area of
+  /// the components of the C-space of radius 2r − 2δ that lie in K (exact curves) plus the area of
+  /// F ∩ (∂K ⊕ disc(r)) (rasterised with a rigorous bound); `errorBound` bounds the raster's error
+  /// and the two parts' overlap (a band of width δ + eps' inside the first). Starts in no
+  /// component add nothing. Built on first use.
+  double coverableArea(const std::vector<Point>& starts, double& errorBound) const;
+
+  /// C-free as polygons of line segments that lie in the exact closed C-free, for line-only files
+  /// (GeoJSON): the components of the C-space of radius r + 4·eps (so the approximation's own error
+  /// and the rounding of its points to doubles stay on the safe side, and pinch points where two
+  /// C-obstacles touch, gaps exactly 2r wide, open), arcs replaced outside their circles within
+  /// `tolerance`, every edge then checked exactly at radius r (sampling.h: sampleFreeRegions).
+  /// `component` is the index in components() of the component holding each; a piece that could
+  /// not be made safe is left out (never seen).
+  struct SampledComponent {
+    int component = -1;
+    SampledRegion region;
+  };
+  std::vector<SampledComponent> sampledComponents(double tolerance) const;
 
   /// Classifies the cells of `grid` by C-space: recursive quadrant clipping, so the cost follows the
   /// cells that C-free's boundary crosses, not all cells × all curves. With `contours`, partial

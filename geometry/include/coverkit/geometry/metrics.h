@@ -16,11 +16,15 @@ struct MetricOptions {
   std::size_t exactAreaMaxSegments = 3000;        ///< above this, area coverage is rasterised...
   std::size_t exactAreaMaxSegmentsClear = 20000;  ///< ...unless the path is clear (no clip to F needed)
   std::size_t rasterMaxPixels = 4'000'000;
-  /// Also measure against the coverable region (start's component of C-free ⊕ disc(r)); builds the
-  /// C-space (radius r and 2r), so it is off unless asked for.
+  /// Also measure against the coverable region (the starts' closed components of C-free ⊕ disc(r),
+  /// docs/metrics.md); builds two C-spaces (radius r − δ and 2r − 2δ), so it is off unless asked for.
   bool coverable = false;
-  /// The C-space to measure the coverable region against, when the caller has one for this
-  /// workspace and radius already (else it is built).
+  /// ...but only for workspaces of at most this many vertices when no C-space is given: the
+  /// C-space of a large polygon costs minutes (13 s at 10^4 vertices, docs/performance.md), far
+  /// more than planning. Above it the coverable metrics are left out (Metrics::coverableSkipped).
+  std::size_t coverableMaxVertices = 20000;
+  /// A C-space of this workspace and radius whose cached helper C-spaces may be used (else they are
+  /// built for this call).
   const CSpace* cspace = nullptr;
   /// The caller's validator already accepted the paths' continuity and clearance: skip that check.
   bool pathsKnownClear = false;
@@ -40,7 +44,8 @@ struct Metrics {
   std::string areaMethod;              ///< "exact" or "raster"
   double sweptAreaOverlap = 0;         ///< (Σ 2r·len + πr²) / coveredArea − 1
   bool hasCoverable = false;           ///< the three below were computed
-  double coverableArea = 0;            ///< area of (start components of C-free) ⊕ disc(r)
+  std::string coverableSkipped;        ///< why they were not, although asked for (else empty)
+  double coverableArea = 0;            ///< area of F ∩ (the starts' closed components of C-free) ⊕ disc(r)
   double coverableAreaError = 0;       ///< bound on |coverableArea − true value|
   double coverableCoverage = 0;        ///< coveredArea / coverableArea
   double length = 0;
