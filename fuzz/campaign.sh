@@ -27,4 +27,4 @@ rc=$?
 execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$dir/log" | tail -1)
 crashes=$(ls "$dir/artifacts" | wc -l)
 echo "$target: exit $rc, ${execs:-?} executions, $(awk "BEGIN {printf \"%.1f\", $used / 60}") CPU-minutes," \
-  "corpus $(ls "$dir/corpus" | wc -l) files ($(du -sk "$dir/corpus" | cut -f1) KB), crashes $crashes" | tee -a "$out/summary.txt"
+  "corpus $(ls "$dir/corpus" | wc -l) files ($(cat "$dir/corpus"/* 2>/dev/null | wc -c) bytes), crashes $crashes" | tee -a "$out/summary.txt"
