@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -419,9 +418,8 @@ TEST(MapImages, HugePngHeaderRefusedBeforeAllocating) {
   }
   EXPECT_LT(fs::file_size(path), 400u);
   put("huge.yaml", "image: huge.png\nresolution: 1\n");
-  const auto t0 = std::chrono::steady_clock::now();
+  // refused from the header, before anything is allocated (the message names the header)
   const std::string e = errorOf([] { datasets::readRosGrid((dir() / "huge.yaml").string()); });
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
   EXPECT_NE(e.find("huge.png: header: grid of 100000 x 100000 cells is too large (the limit is 268435456 = 2^28 cells)"), std::string::npos) << e;
 
   // Within the pixel limit but more than the file can hold (deflate compresses at most 1032:1).
