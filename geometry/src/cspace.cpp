@@ -13,6 +13,7 @@
 #include <CGAL/approximated_offset_2.h>
 
 #include "circle_segment_area.h"
+#include "cspace_access.h"
 
 #include <algorithm>
 #include <cmath>
@@ -178,6 +179,8 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   impl_->areas.swap(areas);
   for (const auto& p : impl_->parts) impl_->partSets.emplace_back(p);
 }
+
+const std::vector<CPolygonWithHoles>& detail::CSpaceAccess::parts(const CSpace& s) { return s.impl_->parts; }
 
 CSpace::~CSpace() = default;
 CSpace::CSpace(CSpace&&) noexcept = default;

@@ -36,6 +36,10 @@
 
 namespace coverkit {
 
+namespace detail {
+struct CSpaceAccess;   // geometry/src: the exact C-free for other CGAL files of the library
+}
+
 /// The coverable region of `CSpace::coverableArea` without a C-space of radius r at hand (it is not
 /// needed: only the helper C-spaces of radius r − δ and 2r − 2δ are built).
 double coverableArea(const Workspace& w, const Rational& radius, const std::vector<Point>& starts, double& errorBound,
@@ -177,6 +181,7 @@ public:
   std::vector<Sweep> sweeps(const std::vector<SweepRequest>& requests) const;
 
 private:
+  friend struct detail::CSpaceAccess;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
