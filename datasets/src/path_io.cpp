@@ -420,6 +420,58 @@ std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc
   }
 }
 
+std::string cellsFileContent(const std::string& file, const CellsDocument& doc) {
+  const std::string e = ext(file);
+  if (e == ".json") {
+    json cells = json::array();
+    for (std::size_t i = 0; i < doc.cells.size(); ++i) {
+      const CurveRegion& r = doc.cells[i].region;
+      json outer = json::array(), holes = json::array();
+      for (const PathSegment& s : r.outer.pieces) outer.push_back(segmentJson(s));
+      for (const CurveLoop& h : r.holes) {
+        json hole = json::array();
+        for (const PathSegment& s : h.pieces) hole.push_back(segmentJson(s));
+        holes.push_back(hole);
+      }
+      cells.push_back({{"index", i}, {"area", r.area}, {"neighbours", doc.cells[i].neighbours}, {"outer", outer}, {"holes", holes}});
+    }
+    json walls = json::array();
+    for (const auto& w : doc.walls) walls.push_back({{"a", w.a}, {"b", w.b}, {"from", pt(w.from)}, {"to", pt(w.to)}});
+    json params = json::object();
+    for (const auto& [k, v] : doc.params) params[k] = v;
+    json j{{"format", "coverkit.cells/1"},
+           {"map", doc.map},
+           {"method", doc.method},
+           {"params", params},
+           {"robot_radius", doc.robotRadius.get_d()},
+           {"robot_radius_exact", doc.robotRadius.get_str()},
+           {"direction_degrees", doc.directionDegrees},
+           {"rotation_exact", {{"cos", doc.rotationCos}, {"sin", doc.rotationSin}}},
+           {"cfree_area", doc.cfreeArea},
+           {"cell_count", doc.cells.size()},
+           {"unwalled_vertices", doc.unwalledVertices},
+           {"cells", cells},
+           {"walls", walls}};
+    return j.dump(1) + "\n";
+  } else if (e == ".geojson") {
+    std::vector<CurveRegion> regions;
+    for (const auto& c : doc.cells) regions.push_back(c.region);
+    const std::vector<SampledRegion> sampled = sampleRegions(regions, kArcSampleTolerance, true);
+    json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
+    for (std::size_t i = 0; i < sampled.size(); ++i) {
+      json rings = json::array({ringJson(sampled[i].outer)});
+      for (const auto& h : sampled[i].holes) rings.push_back(ringJson(h));
+      fc["features"].push_back({{"type", "Feature"},
+                                {"properties", {{"kind", "cell"}, {"index", i}, {"area", doc.cells[i].region.area},
+                                                {"neighbours", doc.cells[i].neighbours}, {"method", doc.method},
+                                                {"arc_tolerance", kArcSampleTolerance}}},
+                                {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
+    }
+    return fc.dump(1) + "\n";
+  }
+  throw InputError(file, "--out", "unknown output format '" + e + "' (expected .json or .geojson)");
+}
+
 void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) { writeFileAtomically(file, cspaceFileContent(file, doc)); }
 
 // Reading path files. Every member is checked for its JSON type before it is used; a problem is an

@@ -7,6 +7,7 @@
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/cspace.h>
+#include <coverkit/geometry/decomposition.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
@@ -309,7 +310,15 @@ int main(int argc, char** argv) {
   cspace->add_option("--picture", picture, "picture (.png, .svg)");
   render->add_flag("--cspace", showCspace, "overlay the C-space (C-obstacles and C-free components)");
 
-  auto* list = app.add_subcommand("list", "list planners and their parameters");
+  auto* decompose = app.add_subcommand("decompose", "decompose the robot's exact C-free into cells (docs/decompositions.md)");
+  std::string method;
+  addMapOptions(decompose, true);
+  decompose->add_option("--method", method, "decomposition (see 'coverkit list'): boustrophedon, trapezoidal, grid")->required();
+  decompose->add_option("--param", params, "decomposition parameter KEY=VALUE (repeatable), e.g. direction=30");
+  decompose->add_option("--out", out, "cells file (.json with segments and arcs, or .geojson with one Polygon per cell)")->required();
+  decompose->add_option("--picture", picture, "picture (.png, .svg)");
+
+  auto* list = app.add_subcommand("list", "list planners and decompositions, and their parameters");
   std::string demoOut = "coverkit-demo";
   auto* demo = app.add_subcommand("demo", "plan every built-in scenario with every planner, validate, write a report");
   demo->add_option("--out", demoOut, "output folder (default: coverkit-demo)");
@@ -357,9 +366,71 @@ int main(int argc, char** argv) {
           std::cout << "  --param " << s.name << "=<" << planners::toString(s.type) << "> default " << s.defaultValue << ", range " << s.range
                     << "\n      " << s.help << "\n";
       }
+      for (const std::string& n : planners::DecompositionRegistry::instance().names()) {
+        auto d = planners::DecompositionRegistry::instance().create(n);
+        const auto caps = d->capabilities();
+        std::cout << "decomposition " << n << ": " << d->description() << "\n  capabilities: " << (caps.monotone ? "monotone cells" : "cells not monotone")
+                  << (caps.rotatable ? ", any sweep direction" : "") << "\n";
+        for (const auto& s : d->params())
+          std::cout << "  --param " << s.name << "=<" << planners::toString(s.type) << "> default " << s.defaultValue << ", range " << s.range
+                    << "\n      " << s.help << "\n";
+      }
       return 0;
     }
     if (*demo) return cmdDemo(demoOut, dataDir, quiet);
+    if (*decompose) {
+      const auto kv = parseParams(params);
+      datasets::checkOutputFile(out, "--out", {".json", ".geojson"});
+      if (!picture.empty()) experiments::checkPictureOutput(picture);
+      {  // unknown method or bad parameters: before any work
+        auto d = planners::DecompositionRegistry::instance().create(method);
+        planners::ParamSet(d->params(), kv, method, "decomposition");
+      }
+      Progress progress(3);
+      progress.step("reading the map");
+      const Problem problem = makeProblem(map, radius, start, unknownFree, cellSize);
+      planners::checkProblem(problem);
+      progress.step("C-space and cells");
+      const planners::Decomposed dec = planners::runDecomposition(method, problem, kv);
+      if (dec.cells.cells.empty())
+        throw InputError("--radius", radius, "C-free is empty: a disc of this radius fits nowhere in " + map + " (no cells)");
+      datasets::CellsDocument doc;
+      doc.map = map;
+      doc.method = method;
+      doc.robotRadius = problem.robots[0].radius;
+      doc.params = kv;
+      doc.directionDegrees = -dec.cells.rotation.degrees();
+      doc.rotationCos = dec.cells.rotation.c.get_str();
+      doc.rotationSin = dec.cells.rotation.s.get_str();
+      doc.cfreeArea = dec.space->area();
+      doc.unwalledVertices = dec.cells.unwalledVertices;
+      std::vector<CurveRegion> regions;
+      for (const DecomposedCell& c : dec.cells.cells) {
+        doc.cells.push_back({unrotate(c.region, dec.cells.rotation), c.neighbours});
+        doc.cells.back().region.area = c.area;
+        regions.push_back(doc.cells.back().region);
+      }
+      for (const CellWall& w : dec.cells.walls) {
+        const PointD a = w.vertical ? PointD{w.at, w.lo} : PointD{w.lo, w.at}, b = w.vertical ? PointD{w.at, w.hi} : PointD{w.hi, w.at};
+        doc.walls.push_back({w.a, w.b, dec.cells.rotation.inverse(a), dec.cells.rotation.inverse(b)});
+      }
+      progress.step("writing");
+      datasets::OutputBatch outputs;
+      outputs.add(out, datasets::cellsFileContent(out, doc));
+      if (!picture.empty()) {
+        experiments::PictureContent pc;
+        pc.workspace = &problem.workspace;
+        pc.cfree = &regions;
+        pc.title = method + " cells of " + fs::path(map).filename().string() + ", r = " + radius;
+        outputs.add(picture, experiments::pictureBytes(picture, pc));
+      }
+      outputs.commit();
+      std::cout << method << ": " << doc.cells.size() << " cell(s), " << doc.walls.size() << " wall(s), C-free area " << formatDouble(doc.cfreeArea);
+      if (dec.cells.rotation.c != 1) std::cout << ", direction " << formatDouble(doc.directionDegrees) << " deg";
+      std::cout << "; C-space " << formatDouble(std::round(dec.cspaceSeconds * 1000) / 1000) << " s, cells "
+                << formatDouble(std::round(dec.decomposeSeconds * 1000) / 1000) << " s; wrote " << out << "\n";
+      return 0;
+    }
     if (*cspace) {
       datasets::checkOutputFile(out, "--out", {".json", ".geojson"});
       if (!picture.empty()) experiments::checkPictureOutput(picture);

@@ -63,7 +63,14 @@ std::optional<Rational> rationalValue(const CoordNT& v) {
   return out;
 }
 
-double dbl(const CoordNT& v) { return CGAL::to_double(v); }
+/// Nearest doubles of exact numbers (CGAL::to_double reads the lazy number's interval, which may be
+/// far wider than a double's rounding).
+double num(const K::FT& v) { return toDouble(toRational(v)); }
+double dbl(const CoordNT& v) {
+  if (!v.is_extended() || CGAL::is_zero(v.a1())) return num(v.a0());
+  return static_cast<double>(static_cast<long double>(num(v.a0())) +
+                             static_cast<long double>(num(v.a1())) * std::sqrt(static_cast<long double>(num(v.root()))));
+}
 
 bool isHorizontal(const Curve& cv) { return cv.is_linear() && !cv.is_vertical() && CGAL::compare(cv.source().y(), cv.target().y()) == CGAL::EQUAL; }
 
@@ -72,13 +79,13 @@ bool isHorizontal(const Curve& cv) { return cv.is_linear() && !cv.is_vertical() 
 double yAt(const Curve& cv, double x) {
   if (cv.is_linear()) {
     const auto l = cv.supporting_line();
-    const double a = CGAL::to_double(l.a()), b = CGAL::to_double(l.b()), c = CGAL::to_double(l.c());
+    const double a = num(l.a()), b = num(l.b()), c = num(l.c());
     if (b == 0) return dbl(cv.source().y());
     return -(a * x + c) / b;
   }
   const auto circ = cv.supporting_circle();
-  const double cx = CGAL::to_double(circ.center().x()), cy = CGAL::to_double(circ.center().y());
-  const double r2 = CGAL::to_double(circ.squared_radius());
+  const double cx = num(circ.center().x()), cy = num(circ.center().y());
+  const double r2 = num(circ.squared_radius());
   const double h = std::sqrt(std::max(0.0, r2 - (x - cx) * (x - cx)));
   const bool lower = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == cv.is_directed_right();
   return lower ? cy - h : cy + h;
@@ -90,7 +97,7 @@ void yRange(const Curve& cv, double& lo, double& hi) {
   hi = std::max(dbl(cv.source().y()), dbl(cv.target().y()));
   if (!cv.is_circular()) return;
   const auto circ = cv.supporting_circle();
-  const double cx = CGAL::to_double(circ.center().x());
+  const double cx = num(circ.center().x());
   if (dbl(cv.left().x()) <= cx && cx <= dbl(cv.right().x())) {
     const double y = yAt(cv, cx);
     lo = std::min(lo, y);
@@ -536,6 +543,45 @@ bool CellDecomposition::interval(int cell, double x, double& lo, double& hi) con
     });
   }
   return lo <= hi;
+}
+
+double SidePiece::yAt(double x) const {
+  if (!arc) return b == 0 ? 0 : -(a * x + c) / b;
+  const double h = std::sqrt(std::max(0.0, rho * rho - (x - center.x) * (x - center.x)));
+  return upperHalf ? center.y + h : center.y - h;
+}
+
+std::vector<SidePiece> CellDecomposition::side(int cell, bool top, double x0, double x1) const {
+  std::vector<SidePiece> out;
+  if (x0 > x1) std::swap(x0, x1);
+  for (const auto& piece : exact->cells.at(static_cast<std::size_t>(cell))) {
+    if (piece.x1 < x0 || piece.x0 > x1) continue;
+    const CPolygon& loop = piece.pwh.outer_boundary();   // counter-clockwise: the top runs right to left
+    for (auto it = loop.curves_begin(); it != loop.curves_end(); ++it) {
+      const Curve& cv = *it;
+      if (cv.is_vertical() || cv.is_directed_right() == top) continue;
+      SidePiece sp;
+      sp.x0 = dbl(cv.left().x());
+      sp.x1 = dbl(cv.right().x());
+      if (sp.x1 < x0 || sp.x0 > x1) continue;
+      if (cv.is_linear()) {
+        const auto l = cv.supporting_line();
+        sp.a = num(l.a());
+        sp.b = num(l.b());
+        sp.c = num(l.c());
+      } else {
+        const auto circ = cv.supporting_circle();
+        sp.arc = true;
+        sp.center = {num(circ.center().x()), num(circ.center().y())};
+        sp.rho = std::sqrt(num(circ.squared_radius()));
+        sp.clockwise = cv.orientation() == CGAL::CLOCKWISE;
+        sp.upperHalf = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
+      }
+      out.push_back(sp);
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const SidePiece& u, const SidePiece& v) { return u.x0 < v.x0; });
+  return out;
 }
 
 int CellDecomposition::locate(const Point& p) const {

@@ -60,4 +60,20 @@ Workspace rotate(const Workspace& w, const Rotation& r) {
   return out;
 }
 
+CurveRegion unrotate(const CurveRegion& region, const Rotation& r) {
+  if (r.c == 1) return region;
+  auto loop = [&](CurveLoop l) {
+    for (PathSegment& s : l.pieces) {
+      s.from = r.inverse(s.from);
+      s.to = r.inverse(s.to);
+      if (s.kind == PathSegment::Kind::kArc) s.center = r.inverse(s.center);
+    }
+    return l;
+  };
+  CurveRegion out = region;
+  out.outer = loop(region.outer);
+  for (CurveLoop& h : out.holes) h = loop(h);
+  return out;
+}
+
 }  // namespace coverkit

@@ -29,14 +29,15 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 }  // namespace
 
-ParamSet::ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner) {
+ParamSet::ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner,
+                   const std::string& kind) {
   for (const auto& entry : given) {
     const std::string& key = entry.first;  // not a structured binding: clang before 16 cannot capture one
     auto it = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == key; });
     if (it == specs.end()) {
       std::string known;
       for (const auto& s : specs) known += (known.empty() ? "" : ", ") + s.name;
-      throw InputError("--param", key, "unknown parameter of planner '" + planner + "' (known: " + (known.empty() ? "none" : known) + ")");
+      throw InputError("--param", key, "unknown parameter of " + kind + " '" + planner + "' (known: " + (known.empty() ? "none" : known) + ")");
     }
   }
   for (const ParamSpec& s : specs) {
@@ -50,12 +51,27 @@ ParamSet::ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::stri
     } else if (s.type == ParamType::kBool) {
       if (v != "true" && v != "false") throw InputError("--param", place, "must be true or false");
     } else {
-      const Rational q = parseRational(v, "--param", place);
+      // "lo:hi" or "lo:hi|word|...": a number in range, or one of the words
+      auto alternatives = split(s.range, '|');
+      const std::string numeric = alternatives.empty() ? std::string() : alternatives.front();
+      if (alternatives.size() > 1 && std::find(alternatives.begin() + 1, alternatives.end(), v) != alternatives.end()) {
+        values_[s.name] = v;
+        continue;
+      }
+      Rational q;
+      try {
+        q = parseRational(v, "--param", place);
+      } catch (const InputError&) {
+        if (alternatives.size() <= 1) throw;
+        std::string words;
+        for (std::size_t k = 1; k < alternatives.size(); ++k) words += (words.empty() ? "" : ", ") + alternatives[k];
+        throw InputError("--param", place, "must be a number in [" + numeric + "] or " + words);
+      }
       if (s.type == ParamType::kInt && q.get_den() != 1) throw InputError("--param", place, "must be an integer");
-      const auto lim = split(s.range, ':');
+      const auto lim = split(numeric, ':');
       if (lim.size() == 2) {
         if ((!lim[0].empty() && q < parseRational(lim[0])) || (!lim[1].empty() && q > parseRational(lim[1])))
-          throw InputError("--param", place, "out of range [" + s.range + "]");
+          throw InputError("--param", place, "out of range [" + numeric + "]");
       }
     }
     values_[s.name] = v;

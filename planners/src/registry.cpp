@@ -4,6 +4,8 @@
 #include <coverkit/planners/bsa.h>
 #include <coverkit/planners/smooth_stc.h>
 #include <coverkit/planners/tracc.h>
+#include <coverkit/planners/decompositions.h>
+#include <coverkit/planners/boustrophedon.h>
 
 #include <algorithm>
 
@@ -21,33 +23,22 @@ Registry& Registry::instance() {
     r.add("tracc", [] { return std::make_unique<TraccPlanner>(); });
     r.add("bsa_spiral", [] { return std::make_unique<BsaPlanner>(BsaPlanner::Filling::kSpiral); });
     r.add("bsa_zigzag", [] { return std::make_unique<BsaPlanner>(BsaPlanner::Filling::kZigzag); });
+    r.add("boustrophedon", [] { return std::make_unique<BoustrophedonPlanner>(); });
     return r;
   }();
   return registry;
 }
 
-void Registry::add(const std::string& name, PlannerFactory factory) {
-  if (contains(name)) throw std::logic_error("planner registered twice: " + name);
-  entries_.emplace_back(name, std::move(factory));
-}
-
-bool Registry::contains(const std::string& name) const {
-  return std::any_of(entries_.begin(), entries_.end(), [&](const auto& e) { return e.first == name; });
-}
-
-std::unique_ptr<Planner> Registry::create(const std::string& name) const {
-  for (const auto& e : entries_)
-    if (e.first == name) return e.second();
-  std::string known;
-  for (const auto& n : names()) known += (known.empty() ? "" : ", ") + n;
-  throw InputError("--planner", name, "unknown planner (known: " + known + ")");
-}
-
-std::vector<std::string> Registry::names() const {
-  std::vector<std::string> n;
-  for (const auto& e : entries_) n.push_back(e.first);
-  std::sort(n.begin(), n.end());
-  return n;
+DecompositionRegistry& DecompositionRegistry::instance() {
+  static DecompositionRegistry registry = [] {
+    DecompositionRegistry r;
+    // One line per built-in decomposition.
+    r.add("trapezoidal", [] { return std::make_unique<SweepDecomposition>(DecompositionRule::kTrapezoidal); });
+    r.add("boustrophedon", [] { return std::make_unique<SweepDecomposition>(DecompositionRule::kBoustrophedon); });
+    r.add("grid", [] { return std::make_unique<GridDecomposition>(); });
+    return r;
+  }();
+  return registry;
 }
 
 Plan runPlanner(const std::string& name, const PlanningContext& context, const std::map<std::string, std::string>& params,
@@ -58,6 +49,16 @@ Plan runPlanner(const std::string& name, const PlanningContext& context, const s
   plan.planner = name;
   plan.timings.insert(plan.timings.begin(), {"cells", context.cellSeconds});
   return plan;
+}
+
+}  // namespace coverkit::planners
+
+namespace coverkit::planners {
+
+Decomposed runDecomposition(const std::string& name, const Problem& problem, const std::map<std::string, std::string>& params) {
+  auto d = DecompositionRegistry::instance().create(name);
+  const ParamSet set(d->params(), params, name, "decomposition");
+  return d->decompose(problem.workspace, problem.robots.at(0).radius, set);
 }
 
 }  // namespace coverkit::planners

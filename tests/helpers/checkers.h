@@ -18,6 +18,13 @@ std::string inputErrorMessage(const std::function<void()>& f);
 ::testing::AssertionResult planIsValid(const planners::PlanningContext& ctx, const Plan& plan);
 /// Every sub-cell of the free mega-cells 4-connected to the start's mega-cell is entered.
 ::testing::AssertionResult coversStartComponent(const planners::PlanningContext& ctx, const Plan& plan);
+/// The swept area covers at least `minimum` of the coverable region (the start's closed component
+/// of C-free ⊕ disc(r), metrics.h), the metric's error bound in the plan's favour.
+::testing::AssertionResult coversCFreeComponent(const planners::PlanningContext& ctx, const Plan& plan, double minimum,
+                                                double* coverage = nullptr);
+/// What a planner's capabilities promise: coversStartComponent, coversReachableSubcells or
+/// coversCFreeComponent (0.95 of the region on every world: the averages are the experiments').
+::testing::AssertionResult coversWhatItClaims(const planners::PlanningContext& ctx, const Plan& plan, const std::string& coverage);
 /// Every free sub-cell 4-connected to the start's sub-cell through free sub-cells is entered,
 /// except those only reachable through sub-cells squeezed to exactly 2r (cells that are not free on
 /// both sides of an axis, within the 3×3 block) at a centre that is not a double: no double path

@@ -64,10 +64,7 @@ TEST_P(PlannerContract, ValidCompleteDeterministicOnSeededWorlds) {
         continue;
       }
       ASSERT_TRUE(testing_helpers::planIsValid(ctx, a));
-      if (planner->capabilities().coverage == "free_sub_cells")
-        EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
-      else
-        EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
+      EXPECT_TRUE(testing_helpers::coversWhatItClaims(ctx, a, planner->capabilities().coverage));
       const Plan b = planners::runPlanner(name, ctx, params);
       datasets::PathDocument da, db;
       da.paths = a.paths;

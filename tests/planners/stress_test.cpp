@@ -99,11 +99,7 @@ TEST(Stress, EveryPlannerOnCellsOnSeededWorldsRadiiCellSizesAndStarts) {
       }
       ++plans;
       ASSERT_TRUE(testing_helpers::planIsValid(ctx, a));
-      if (caps.coverage == "free_sub_cells") {
-        EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
-      } else {
-        EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
-      }
+      EXPECT_TRUE(testing_helpers::coversWhatItClaims(ctx, a, caps.coverage));
       EXPECT_EQ(testing_helpers::pathJsonOf(a), testing_helpers::pathJsonOf(planners::runPlanner(name, ctx, {})));
     }
   }
@@ -156,11 +152,7 @@ TEST(Stress, EveryPlannerOnCellsOnTheMapsOfAFolder) {
         if (!only.empty())
           std::cout << f << " r " << r.get_str() << " " << name << ": " << toString(a.status) << ", " << a.paths[0].segments.size()
                     << " pieces\n";
-        if (caps.coverage == "free_sub_cells") {
-          EXPECT_TRUE(testing_helpers::coversReachableSubcells(ctx, a));
-        } else {
-          EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, a));
-        }
+        EXPECT_TRUE(testing_helpers::coversWhatItClaims(ctx, a, caps.coverage));
         if (name == "spiral_stc") {
           EXPECT_TRUE(testing_helpers::withinGabrielyRimonBound(ctx, a));
         }

@@ -5,6 +5,7 @@
 #include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/path.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -54,6 +55,29 @@ struct CSpaceDocument {
   const CSpace* cspace = nullptr;
 };
 void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc);
+
+/// Cell decompositions ("coverkit.cells/1" JSON, or GeoJSON with one Polygon per cell, arcs sampled
+/// inside the cell), docs/formats.md. Everything in the workspace's frame.
+struct CellsDocument {
+  std::string map, method;
+  Rational robotRadius;
+  std::map<std::string, std::string> params;
+  double directionDegrees = 0;             ///< the sweep direction used (sweep models)
+  std::string rotationCos = "1", rotationSin = "0";   ///< the exact rotation (rationals as text)
+  double cfreeArea = 0;
+  std::size_t unwalledVertices = 0;
+  struct Cell {
+    CurveRegion region;
+    std::vector<int> neighbours;
+  };
+  std::vector<Cell> cells;
+  struct Wall {
+    int a = -1, b = -1;
+    PointD from, to;
+  };
+  std::vector<Wall> walls;
+};
+std::string cellsFileContent(const std::string& file, const CellsDocument& doc);
 
 /// The content of a path file as `writePathFile` writes it (by extension; InputError for an unknown one).
 std::string pathFileContent(const std::string& file, const PathDocument& doc);

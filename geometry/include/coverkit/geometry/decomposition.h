@@ -51,6 +51,8 @@ struct Rotation {
   static Rotation nearest(double degrees, long maxDenominator = 1000);
 };
 Workspace rotate(const Workspace& w, const Rotation& r);
+/// A region of the rotated frame back in the workspace's frame (doubles: for output).
+CurveRegion unrotate(const CurveRegion& region, const Rotation& r);
 
 enum class DecompositionRule { kTrapezoidal, kBoustrophedon, kGrid };
 
@@ -76,6 +78,21 @@ namespace detail {
 struct ExactCells;   // geometry/src/decompose.cpp
 }
 
+/// A piece of a sweep cell's top or bottom boundary, in doubles (for planners that follow it): a
+/// segment of the line a·x + b·y + c = 0 or an arc of the circle about `center` of radius `rho`
+/// (its upper or lower half), over [x0, x1]. `clockwise`: the boundary (C-free on its left) runs
+/// clockwise about the centre, so C-free lies outside the circle there (every arc of a disc
+/// robot's C-free does: its centre is an obstacle's vertex).
+struct SidePiece {
+  double x0 = 0, x1 = 0;
+  bool arc = false;
+  double a = 0, b = 0, c = 0;      ///< line
+  PointD center;                   ///< arc
+  double rho = 0;
+  bool upperHalf = false, clockwise = true;
+  double yAt(double x) const;
+};
+
 /// Cells of C-free and their adjacency, in the decomposition's frame (rotated by `rotation`
 /// from the workspace's frame: a point p of the workspace is rotation.apply(p) here).
 struct CellDecomposition {
@@ -93,6 +110,8 @@ struct CellDecomposition {
   bool interval(int cell, double x, double& lo, double& hi) const;
   /// The cell whose closure holds p (frame coordinates, exact), or −1.
   int locate(const Point& p) const;
+  /// The top (or bottom) boundary of a sweep cell over [x0, x1], sorted by x; vertical pieces left out.
+  std::vector<SidePiece> side(int cell, bool top, double x0, double x1) const;
 };
 
 /// Builds a decomposition of the C-free of `space` (its workspace is already in the frame).

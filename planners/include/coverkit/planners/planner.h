@@ -16,7 +16,8 @@ namespace coverkit::planners {
 enum class ParamType { kInt, kDouble, kBool, kChoice };
 const char* toString(ParamType t);
 
-/// A declared parameter. `range` is "lo:hi" for numbers (inclusive) or "a|b|c" for choices.
+/// A declared parameter. `range` is "lo:hi" for numbers (inclusive), "lo:hi|word|..." for a number or
+/// one of the words (direction=best), or "a|b|c" for choices.
 struct ParamSpec {
   std::string name;
   ParamType type = ParamType::kDouble;
@@ -31,7 +32,9 @@ public:
   ParamSet() = default;
   /// Validates `given` (KEY → VALUE) against `specs`, filling defaults. Throws InputError for an
   /// unknown key, a value of the wrong type or out of range.
-  ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner);
+  /// `planner` and `kind` name the owner in errors ("planner 'stc'", "decomposition 'grid'").
+  ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::string, std::string>& given, const std::string& planner,
+           const std::string& kind = "planner");
   const std::string& text(const std::string& name) const;
   double number(const std::string& name) const;
   long integer(const std::string& name) const;
@@ -48,7 +51,8 @@ struct Capabilities {
   bool needsCells = true;
   std::string output = "lines";   ///< "lines" or "lines+arcs"
   /// What a successful plan covers: "free_mega_cells" (every sub-cell of the free mega-cells
-  /// 4-connected to the start's) or "free_sub_cells" (every free sub-cell 4-connected to the start's).
+  /// 4-connected to the start's), "free_sub_cells" (every free sub-cell 4-connected to the start's)
+  /// or "cfree_component" (the start's component of C-free ⊕ disc(r), measured as an area).
   std::string coverage = "free_mega_cells";
 };
 

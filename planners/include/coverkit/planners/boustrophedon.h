@@ -1,0 +1,65 @@
+#pragma once
+// Boustrophedon coverage on an exact cell decomposition (issue 13).
+//
+// Reference: H. Choset and P. Pignon, "Coverage Path Planning: The Boustrophedon Cellular
+// Decomposition", Field and Service Robotics (1997): decompose free space into cells bounded by
+// walls at the critical points of a sweep line (where its connectivity changes), order the cells by
+// a walk of the adjacency (Reeb) graph, and cover every cell with back-and-forth lanes. The paper
+// works on the workspace of a point robot; here the cells are those of the disc robot's exact C-free
+// (planners/decomposition.h), so a lane's ends are where the disc touches the boundary.
+//
+// Decisions where the paper leaves things open:
+//  - Lanes run along the sweep lines (perpendicular to the sweep direction), from one end of the
+//    cell to the other (τ inside, see below), k + 1 of them at spacing s = width / k ≤ 2r: the
+//    discs of adjacent lanes meet or overlap, and a cell that ends at C-free's boundary (an
+//    obstacle's side) has a lane there to sweep the band of width r beside it. Cells that end at a
+//    wall share that lane's strip with their neighbour: the price of not knowing, per cell end,
+//    whether it is wall or boundary along its whole length.
+//  - The wall band. Beside a wall of the workspace C-free's boundary is at distance r, and the
+//    band between them is swept only by a centre that runs along that boundary: the discs at lane
+//    ends touch the wall at the lanes' x alone (between two lanes 2r apart they miss
+//    (2 − π/2)·r² of it). So every piece of a cell's top and bottom boundary is followed, at
+//    τ = min(r/100, half the cell's height) inside it (refined until every chord is clear): the
+//    sweep runs along the first side to the far end, back over the lanes in a serpentine (an odd
+//    number of lanes, so it ends on the other side), and along the other side again. That is
+//    lanes + 3 × the cell's width, the least a closed walk over every lane and both sides needs
+//    (the sides' inner lane ends have odd degree: a Chinese postman tour doubles one side's
+//    length); a serpentine alone (lanes + width) covered 0.985 of pillars.wkt at r = 0.25. τ costs
+//    a sliver of width τ along C-free's boundary.
+//  - Order: depth-first on the cell graph from the start's cell, nearest neighbour first (the
+//    Reeb graph's walk), then 2-opt on the order with shortest-path distances in the cell graph
+//    (up to 400 cells; beyond that the DFS order is kept: O(n²) per pass). Each cell is entered at
+//    the corner (left/right, up/down) nearest the robot.
+//  - Transitions between cells follow a shortest path of the cell graph, through the middle of the
+//    longest wall shared by consecutive cells; inside a cell, a straight segment, split at the
+//    middle of the cell's interval until every piece is clear (a monotone cell holds such a path).
+//  - Safety: the plan is made in the C-free of radius r + μ (μ = 2^-24·r, at least 2^-40 of the
+//    extent): every piece is checked exactly there (CSpace::segmentClear), so rounding the frame's
+//    points back from a rotated frame (an error near 1e-16 of the extent) cannot bring the disc
+//    within r of an obstacle. The coverage lost to μ is below 1e-6.
+//  - A cell that cannot be reached (a failed transition, never seen) is skipped and reported
+//    (status partial coverage, statistic skipped_cells).
+//  - direction=best plans the directions of the workspace's longest edge families (the four with
+//    the most total edge length, modulo 180°) and 0° and 90°, and keeps the plan with the least
+//    length + r × total turning (radians).
+//  - Gaps exactly 2r wide. C-free is closed (cspace.h): a disc may pass a gap exactly 2r wide along
+//    its centre line. The plan's C-free (radius r + μ) is cut there, so components joined to the
+//    start's only through such a gap are not crossed: their cells are counted
+//    (cells_behind_exact_gaps, area_behind_exact_gaps, via CSpace::closedComponentOf) and the status
+//    is partial coverage. (On a grid map at resolution 1/10 the centre line of such a gap is not a
+//    double: no double path crosses it at all.)
+// Coverage claim: the start's component of C-free ⊕ disc(r), less what lies behind such gaps.
+#include <coverkit/planners/planner.h>
+
+namespace coverkit::planners {
+
+class BoustrophedonPlanner : public Planner {
+public:
+  std::string name() const override { return "boustrophedon"; }
+  std::string description() const override;
+  std::vector<ParamSpec> params() const override;
+  Capabilities capabilities() const override;
+  Plan plan(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop) override;
+};
+
+}  // namespace coverkit::planners

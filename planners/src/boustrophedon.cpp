@@ -1,0 +1,544 @@
+// Boustrophedon coverage on an exact cell decomposition (see boustrophedon.h for the decisions).
+#include <coverkit/geometry/error.h>
+#include <coverkit/geometry/validate.h>
+#include <coverkit/graph/cell_graph.h>
+#include <coverkit/planners/boustrophedon.h>
+#include <coverkit/planners/registry.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace coverkit::planners {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double dist(PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); }
+Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
+
+/// Total turning of a path (radians): heading changes at joints and along arcs.
+double turning(const Path& path) {
+  double t = 0;
+  auto heading = [](const PathSegment& s, bool atEnd) {
+    if (s.kind == PathSegment::Kind::kLine) return std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
+    const PointD p = atEnd ? s.to : s.from;
+    const double a = std::atan2(p.y - s.center.y, p.x - s.center.x);
+    return a + (s.ccw ? M_PI / 2 : -M_PI / 2);
+  };
+  auto wrap = [](double a) { return std::remainder(a, 2 * M_PI); };
+  for (std::size_t i = 0; i < path.segments.size(); ++i) {
+    const PathSegment& s = path.segments[i];
+    if (s.kind == PathSegment::Kind::kArc) t += std::abs(wrap(heading(s, true) - heading(s, false)));
+    if (i > 0) t += std::abs(wrap(heading(s, false) - heading(path.segments[i - 1], true)));
+  }
+  return t;
+}
+
+/// One direction's plan, in the decomposition's frame.
+struct FramePlan {
+  bool ok = false;
+  PlanStatus status = PlanStatus::kExactSolution;
+  std::string message;
+  Path path;                     ///< in the workspace's frame (rotated back)
+  double cost = std::numeric_limits<double>::infinity();
+  double degrees = 0;
+  std::map<std::string, double> stats;
+  double cspaceSeconds = 0, decomposeSeconds = 0, planSeconds = 0;
+};
+
+class Walker {
+public:
+  Walker(const Decomposed& d, double r) : cells_(d.cells), space_(*d.space), r_(r) {}
+
+  /// Appends the line u → v when it is clear in the frame's C-free (radius r + μ), exactly.
+  bool line(PointD u, PointD v, std::vector<PathSegment>& out) const {
+    if (u.x == v.x && u.y == v.y) return true;
+    ++checks_;
+    if (!space_.segmentClear(exactOf(u), exactOf(v))) return false;
+    out.push_back(PathSegment::line(u, v));
+    return true;
+  }
+  /// Appends the arc about c from u to the ray through v (radius |u − c|) when it is clear; `end`
+  /// gets the arc's end.
+  bool arc(PointD u, PointD v, PointD c, std::vector<PathSegment>& out, PointD& end) const {
+    const double rho = dist(u, c), d = dist(v, c);
+    if (rho == 0 || d == 0) return false;
+    end = {c.x + (v.x - c.x) * rho / d, c.y + (v.y - c.y) * rho / d};
+    const bool ccw = (u.x - c.x) * (v.y - c.y) - (u.y - c.y) * (v.x - c.x) > 0;
+    ++checks_;
+    if (!space_.arcClear(exactOf(u), exactOf(end), exactOf(c), ccw)) return false;
+    out.push_back(PathSegment::arc(u, end, c, ccw));
+    return true;
+  }
+
+  double tau(double lo, double hi) const { return std::min(r_ / 100, (hi - lo) / 4); }
+
+  /// A path from u to v inside `cell` (both in it): the chord, or split at the middle of the
+  /// cell's interval halfway in x, recursively.
+  bool connect(int cell, PointD u, PointD v, std::vector<PathSegment>& out, int depth = 0) const {
+    if (line(u, v, out)) return true;
+    if (depth > 18) return false;
+    // split halfway in x; two points on one vertical line (two doors on one wall line, where an
+    // obstacle may touch it) go through the middle of the cell instead
+    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    double xm = (u.x + v.x) / 2;
+    if (std::abs(u.x - v.x) <= 1e-9 * (c.xmax - c.xmin)) xm = (c.xmin + c.xmax) / 2;
+    double lo, hi;
+    if (!cells_.interval(cell, xm, lo, hi)) return false;
+    const PointD m{xm, (lo + hi) / 2};
+    if ((m.x == u.x && m.y == u.y) || (m.x == v.x && m.y == v.y)) return false;
+    return connect(cell, u, m, out, depth + 1) && connect(cell, m, v, out, depth + 1);
+  }
+
+  /// The point τ inside a side piece at x, along the piece's normal (a parallel line, or a circle
+  /// of radius ρ ± τ about the same centre).
+  static bool offsetAt(const SidePiece& p, double x, bool top, double t, PointD& out) {
+    if (!p.arc) {
+      if (p.b == 0) return false;
+      out = {x, p.yAt(x) + (top ? -1 : 1) * t * std::hypot(p.a, p.b) / std::abs(p.b)};
+      return true;
+    }
+    const double rho = p.clockwise ? p.rho + t : p.rho - t;
+    const double h2 = rho * rho - (x - p.center.x) * (x - p.center.x);
+    if (rho <= 0 || h2 < 0) return false;
+    out = {x, p.upperHalf ? p.center.y + std::sqrt(h2) : p.center.y - std::sqrt(h2)};
+    return true;
+  }
+  /// The point τ inside the side at the boundary point q of piece p (q on p).
+  static PointD offsetOf(const SidePiece& p, PointD q, bool top, double t) {
+    if (!p.arc) {
+      double nx = p.a, ny = p.b;
+      const double len = std::hypot(nx, ny);
+      if ((top && ny > 0) || (!top && ny < 0)) {
+        nx = -nx;
+        ny = -ny;
+      }
+      return {q.x + t * nx / len, q.y + t * ny / len};
+    }
+    const double rho = p.clockwise ? p.rho + t : p.rho - t, d = dist(q, p.center);
+    return {p.center.x + (q.x - p.center.x) * rho / d, p.center.y + (q.y - p.center.y) * rho / d};
+  }
+
+  /// The end of the lane at x on the cell's bottom or top: τ inside the boundary (offsetAt), kept
+  /// inside the middle of the interval.
+  bool laneEnd(int cell, double x, bool bottom, PointD& out) const {
+    double lo, hi;
+    if (!cells_.interval(cell, x, lo, hi)) return false;
+    const double t = tau(lo, hi), mid = (lo + hi) / 2;
+    out = {x, bottom ? lo + t : hi - t};
+    for (const SidePiece& p : cells_.side(cell, !bottom, x, x)) {
+      PointD q;
+      if (x < p.x0 || x > p.x1 || !offsetAt(p, x, !bottom, t, q)) continue;
+      if (bottom ? (q.y >= lo && q.y <= mid) : (q.y <= hi && q.y >= mid)) out = q;
+      break;
+    }
+    return true;
+  }
+
+  /// From lane end u to lane end v along the cell's top or bottom, τ inside it: lines and arcs
+  /// parallel to the boundary's pieces, joined by short lines where two pieces meet at a corner.
+  /// Every piece is checked exactly; when one is not clear, chords refined at the middle instead.
+  bool hug(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out) const {
+    std::vector<PathSegment> tmp;
+    if (hugAlong(cell, u, v, top, tmp)) {
+      out.insert(out.end(), tmp.begin(), tmp.end());
+      return true;
+    }
+    return hugChords(cell, u, v, top, out);
+  }
+
+  /// The lanes of a cell, left to right (boustrophedon.h): their x.
+  std::vector<double> lanes(int cell) const {
+    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const double w = c.xmax - c.xmin;
+    double lo, hi;
+    const double t = cells_.interval(cell, (c.xmin + c.xmax) / 2, lo, hi) ? std::min(r_ / 100, w / 4) : 0;
+    const bool leftWall = wallEnd(cell, c.xmin), rightWall = wallEnd(cell, c.xmax);
+    const double A = (leftWall ? 0.5 : 0) + (rightWall ? 0.5 : 0);
+    const double span = w - t * ((leftWall ? 0 : 1) + (rightWall ? 0 : 1));
+    int m = std::max(1, static_cast<int>(std::ceil(span / (2 * r_) + 1 - A - 1e-9)));
+    if (m % 2 == 0) ++m;   // an odd number: the serpentine ends on the side it did not start
+    std::vector<double> out;
+    if (m - 1 + A <= 0) return {(c.xmin + c.xmax) / 2};
+    const double s = span / (m - 1 + A);
+    const double x0 = leftWall ? c.xmin + s / 2 : c.xmin + t;
+    for (int i = 0; i < m; ++i) out.push_back(x0 + s * i);
+    return out;
+  }
+
+  /// A reference point of a cell: the middle of its interval at the middle of its extent.
+  PointD reference(int cell) const {
+    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const double x = (c.xmin + c.xmax) / 2;
+    double lo, hi;
+    if (cells_.interval(cell, x, lo, hi)) return {x, (lo + hi) / 2};
+    return {x, (c.ymin + c.ymax) / 2};
+  }
+
+  /// The middle of the longest wall between a and b.
+  PointD door(int a, int b) const {
+    const CellWall* best = nullptr;
+    for (const CellWall& w : cells_.walls)
+      if (w.a == std::min(a, b) && w.b == std::max(a, b) && (!best || w.length() > best->length())) best = &w;
+    const double mid = (best->lo + best->hi) / 2;
+    return best->vertical ? PointD{best->at, mid} : PointD{mid, best->at};
+  }
+
+  std::size_t checks() const { return checks_; }
+
+private:
+  /// The cell's end at x is (almost) all wall: its neighbour's lanes sweep beside it.
+  bool wallEnd(int cell, double x) const {
+    double lo, hi;
+    if (!cells_.interval(cell, x, lo, hi) || hi <= lo) return false;
+    double walls = 0;
+    for (const CellWall& w : cells_.walls)
+      if (w.vertical && (w.a == cell || w.b == cell) && std::abs(w.at - x) <= 1e-9 * (1 + std::abs(x))) walls += w.length();
+    return walls >= 0.999 * (hi - lo);
+  }
+
+  bool hugAlong(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out) const {
+    double lo, hi;
+    const double dir = v.x >= u.x ? 1 : -1;
+    std::vector<SidePiece> pieces = cells_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x));
+    if (dir < 0) std::reverse(pieces.begin(), pieces.end());
+    PointD cur = u;
+    for (const SidePiece& p : pieces) {
+      const double xs = dir > 0 ? std::max(p.x0, u.x) : std::min(p.x1, u.x);
+      const double xe = dir > 0 ? std::min(p.x1, v.x) : std::max(p.x0, v.x);
+      if ((xe - xs) * dir <= 0) continue;
+      if (!cells_.interval(cell, (xs + xe) / 2, lo, hi)) return false;
+      const double t = tau(lo, hi);
+      const PointD start = offsetOf(p, {xs, p.yAt(xs)}, top, t);
+      const bool last = xe == v.x;
+      const PointD target = last ? v : offsetOf(p, {xe, p.yAt(xe)}, top, t);
+      if (dist(cur, start) > 1e-12 * (1 + std::abs(cur.x) + std::abs(cur.y)) && !line(cur, start, out)) return false;
+      cur = start;
+      if (!p.arc) {
+        if (!line(cur, target, out)) return false;
+        cur = target;
+      } else {
+        PointD end;
+        if (!arc(cur, target, p.center, out, end)) return false;
+        cur = end;
+      }
+    }
+    return line(cur, v, out);
+  }
+
+  /// Chords between points τ inside the boundary, split at the middle until clear.
+  bool hugChords(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out, int depth = 0) const {
+    if (line(u, v, out)) return true;
+    if (depth > 12) return connect(cell, u, v, out);
+    const double xm = (u.x + v.x) / 2;
+    PointD m;
+    if (xm == u.x || xm == v.x || !laneEnd(cell, xm, !top, m)) return connect(cell, u, v, out);
+    return hugChords(cell, u, m, top, out, depth + 1) && hugChords(cell, m, v, top, out, depth + 1);
+  }
+
+  const CellDecomposition& cells_;
+  const CSpace& space_;
+  double r_;
+  mutable std::size_t checks_ = 0;
+};
+
+FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std::string& decomposition, double degrees,
+                        const TerminationCondition& stop) {
+  FramePlan fp;
+  const double r = problem.robots[0].radius.get_d();
+  const Point start = *problem.robots[0].start;
+  auto t0 = Clock::now();
+  const Decomposed d = runDecomposition(decomposition, {problem.workspace, {{rPlan, std::nullopt}}, std::nullopt},
+                                        {{"direction", formatDouble(degrees)}});
+  fp.cspaceSeconds = d.cspaceSeconds;
+  fp.decomposeSeconds = d.decomposeSeconds;
+  t0 = Clock::now();
+  const CellDecomposition& cells = d.cells;
+  const Rotation& rot = cells.rotation;
+  fp.degrees = -rot.degrees();
+  fp.stats["cells"] = static_cast<double>(cells.cells.size());
+  fp.stats["unwalled_vertices"] = static_cast<double>(cells.unwalledVertices);
+  fp.stats["direction_degrees"] = fp.degrees;
+  if (cells.cells.empty()) {
+    fp.status = PlanStatus::kNoFreeSpace;
+    fp.message = "C-free is empty: the robot fits nowhere";
+    return fp;
+  }
+  // the start may lie within μ of C-free's boundary (the default start of a sub-cell exactly 2r
+  // wide does): then the path steps from it to a point of the plan's C-free, checked exactly at r
+  const Point startFrame = rot.apply(start);
+  PointD entry{startFrame.x.get_d(), startFrame.y.get_d()};
+  int startCell = cells.locate(startFrame);
+  bool stepped = false;
+  if (startCell < 0 && segmentClear(problem.workspace, problem.robots[0].radius, start, start)) {
+    const double mu = Rational(rPlan - problem.robots[0].radius).get_d();
+    for (double step = 2 * mu; step < r && startCell < 0; step *= 4)
+      for (int k = 0; k < 16 && startCell < 0; ++k) {
+        const double a = k * M_PI / 8;
+        const PointD p{entry.x + step * std::cos(a), entry.y + step * std::sin(a)};
+        const PointD back = rot.c == 1 ? p : rot.inverse(p);
+        if (cells.locate(exactOf(p)) < 0 || !segmentClear(problem.workspace, problem.robots[0].radius, start, exactOf(back))) continue;
+        startCell = cells.locate(exactOf(p));
+        entry = p;
+        stepped = true;
+      }
+  }
+  if (startCell < 0) {
+    fp.status = PlanStatus::kInvalidStart;
+    fp.message = "the start is not in C-free (the disc there meets an obstacle or the workspace's boundary)";
+    return fp;
+  }
+  Walker walk(d, r);
+  const std::size_t n = cells.cells.size();
+  std::vector<PointD> ref(n);
+  for (std::size_t c = 0; c < n; ++c) ref[c] = walk.reference(static_cast<int>(c));
+  std::vector<graph::WeightedEdge> edges;
+  for (const CellWall& w : cells.walls) {
+    const PointD door = walk.door(w.a, w.b);
+    edges.push_back({w.a, w.b, dist(ref[static_cast<std::size_t>(w.a)], door) + dist(door, ref[static_cast<std::size_t>(w.b)])});
+  }
+  const graph::CellGraph g(static_cast<int>(n), edges);
+
+  // order: DFS of the cell graph, then 2-opt on shortest-path distances
+  std::vector<int> order = g.depthFirstOrder(startCell);
+  if (order.size() > 2 && order.size() <= 400) {
+    std::map<int, std::vector<double>> distFrom;
+    for (int c : order) {
+      std::vector<int> pred;
+      g.shortestPaths(c, distFrom[c], pred);
+    }
+    auto D = [&](int a, int b) { return distFrom[a][static_cast<std::size_t>(b)]; };
+    bool improved = true;
+    for (int pass = 0; improved && pass < 20 && !stop.expired(); ++pass) {
+      improved = false;
+      for (std::size_t i = 1; i + 1 < order.size(); ++i)
+        for (std::size_t j = i + 1; j < order.size(); ++j) {
+          // reverse order[i..j]: the open path's last edge has no successor
+          const double before = D(order[i - 1], order[i]) + (j + 1 < order.size() ? D(order[j], order[j + 1]) : 0);
+          const double after = D(order[i - 1], order[j]) + (j + 1 < order.size() ? D(order[i], order[j + 1]) : 0);
+          if (after + 1e-12 < before) {
+            std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i), order.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+            improved = true;
+          }
+        }
+    }
+  }
+
+  std::vector<PathSegment> segs;
+  auto cur = [&] { return segs.empty() ? entry : segs.back().to; };
+  int here = startCell;
+  std::size_t skipped = 0, lanesTotal = 0;
+  bool timedOut = false;
+  for (int cell : order) {
+    if (stop.expired()) {
+      timedOut = true;
+      break;
+    }
+    std::vector<double> xs = walk.lanes(cell);
+    std::vector<std::pair<PointD, PointD>> lanes;   // (bottom end, top end)
+    for (double x : xs) {
+      PointD lo, hi;
+      if (walk.laneEnd(cell, x, true, lo) && walk.laneEnd(cell, x, false, hi)) lanes.push_back({lo, hi});
+    }
+    if (lanes.empty()) continue;
+    // the corner nearest the robot: which end first (left or right) and which side first (the
+    // bottom or the top): the first pass runs along that side
+    bool fromRight = false, bottomFirst = true;
+    double best = std::numeric_limits<double>::infinity();
+    for (bool fr : {false, true})
+      for (bool bf : {true, false}) {
+        const auto& l = fr ? lanes.back() : lanes.front();
+        const double dd = dist(cur(), bf ? l.first : l.second);
+        if (dd < best) {
+          best = dd;
+          fromRight = fr;
+          bottomFirst = bf;
+        }
+      }
+    if (fromRight) std::reverse(lanes.begin(), lanes.end());
+    auto end = [&](std::size_t i, bool bottom) { return bottom ? lanes[i].first : lanes[i].second; };
+    const PointD first = end(0, bottomFirst);
+    // get there: through the cells of a shortest path of the cell graph
+    std::vector<PathSegment> route;
+    bool reached = true;
+    if (here != cell) {
+      const std::vector<int> via = g.shortestPath(here, cell);
+      if (via.empty()) reached = false;
+      PointD at = cur();
+      for (std::size_t k = 0; reached && k + 1 < via.size(); ++k) {
+        const PointD door = walk.door(via[k], via[k + 1]);
+        reached = walk.connect(via[k], at, door, route);
+        at = door;
+      }
+      if (reached) reached = walk.connect(cell, at, first, route);
+    } else {
+      reached = walk.connect(cell, cur(), first, route);
+    }
+    if (!reached) {
+      ++skipped;
+      continue;
+    }
+    segs.insert(segs.end(), route.begin(), route.end());
+    // the sweep (boustrophedon.h): along the first side to the far end, the lanes back in a
+    // serpentine (an odd number of lanes ends on the other side), along the other side again
+    bool ok = true;
+    const std::size_t m = lanes.size();
+    for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, bottomFirst), !bottomFirst, segs);
+    bool atBottom = bottomFirst;
+    for (std::size_t j = m; ok && j-- > 0;) {
+      ok = walk.line(cur(), end(j, !atBottom), segs);
+      atBottom = !atBottom;
+      ++lanesTotal;
+      if (ok && j > 0) ok = walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
+    }
+    for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
+    if (!ok) ++skipped;   // what was swept before the break stays; the cell counts as not done
+    here = cell;
+  }
+  // back to the workspace's frame; the start exactly as given (as a double)
+  const PointD startD{start.x.get_d(), start.y.get_d()};
+  auto back = [&](PointD p) { return rot.c == 1 ? p : rot.inverse(p); };
+  Path path;
+  path.start = startD;
+  if (stepped) path.segments.push_back(PathSegment::line(startD, back(entry)));
+  for (const PathSegment& sg : segs) {
+    PathSegment t = sg;
+    t.from = back(sg.from);
+    t.to = back(sg.to);
+    if (sg.kind == PathSegment::Kind::kArc) t.center = back(sg.center);
+    if (path.segments.empty() && !stepped) t.from = startD;   // rotated back, the first point is the start
+    path.segments.push_back(t);
+  }
+  fp.path = std::move(path);
+  fp.stats["lanes"] = static_cast<double>(lanesTotal);
+  fp.stats["skipped_cells"] = static_cast<double>(skipped);
+  fp.stats["cells_in_component"] = static_cast<double>(order.size());
+  fp.stats["exact_checks"] = static_cast<double>(walk.checks());
+  // components of the plan's C-free joined to the start's only where C-free is pinched to zero
+  // width (a gap exactly 2r wide, boustrophedon.h): counted, not crossed
+  std::size_t behind = 0;
+  double behindArea = 0;
+  if (d.space->componentCount() > 1) {
+    const int home = cells.cells[static_cast<std::size_t>(startCell)].component;
+    const int closedHome = d.space->closedComponentOf(startFrame);
+    std::map<int, bool> joined;
+    for (std::size_t c = 0; c < n; ++c) {
+      const int k = cells.cells[c].component;
+      if (k == home) continue;
+      auto it = joined.find(k);
+      if (it == joined.end()) it = joined.emplace(k, closedHome >= 0 && d.space->closedComponentOf(exactOf(ref[c])) == closedHome).first;
+      if (it->second) behindArea += cells.cells[c].area;
+      behind += it->second;
+    }
+  }
+  fp.stats["cells_behind_exact_gaps"] = static_cast<double>(behind);
+  fp.stats["area_behind_exact_gaps"] = behindArea;
+  fp.ok = true;
+  if (behind > 0 && skipped == 0 && !timedOut) {
+    fp.status = PlanStatus::kPartialCoverage;
+    fp.message = std::to_string(behind) + " cell(s) of C-free (area " + formatDouble(behindArea) +
+                 ") are joined to the start's only through gaps exactly 2r wide, which this planner does not cross";
+  }
+  if (timedOut) {
+    fp.status = PlanStatus::kTimeout;
+    fp.message = "time limit reached";
+  } else if (skipped > 0) {
+    fp.status = PlanStatus::kPartialCoverage;
+    fp.message = std::to_string(skipped) + " cell(s) could not be reached or swept";
+  }
+  fp.cost = fp.path.length() + r * turning(fp.path);
+  fp.planSeconds = since(t0);
+  return fp;
+}
+
+/// The sweep directions `best` tries: 0°, 90° and the four edge directions (mod 180°) with the most
+/// total edge length, to 0.1°.
+std::vector<double> candidateDirections(const Workspace& w) {
+  std::map<long, double> weight;   // tenths of a degree in [0, 1800)
+  for (const Ring* ring : w.rings())
+    for (std::size_t i = 0; i < ring->size(); ++i) {
+      const Point& a = (*ring)[i];
+      const Point& b = (*ring)[(i + 1) % ring->size()];
+      const double dx = Rational(b.x - a.x).get_d(), dy = Rational(b.y - a.y).get_d();
+      double deg = std::atan2(dy, dx) * 180 / M_PI;
+      if (deg < 0) deg += 180;
+      long key = std::lround(deg * 10) % 1800;
+      weight[key] += std::hypot(dx, dy);
+    }
+  std::vector<std::pair<double, long>> byWeight;
+  for (const auto& [k, wt] : weight) byWeight.push_back({-wt, k});
+  std::sort(byWeight.begin(), byWeight.end());
+  std::vector<double> out{0, 90};
+  for (std::size_t i = 0; i < byWeight.size() && i < 4; ++i) {
+    const double deg = static_cast<double>(byWeight[i].second) / 10;
+    if (std::find(out.begin(), out.end(), deg) == out.end()) out.push_back(deg);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string BoustrophedonPlanner::description() const {
+  return "boustrophedon coverage (Choset & Pignon) on an exact decomposition of C-free: lanes at spacing <= 2r in each "
+         "cell, cells in a DFS + 2-opt order of the cell graph, transitions through the cells";
+}
+
+std::vector<ParamSpec> BoustrophedonPlanner::params() const {
+  return {{"decomposition", ParamType::kChoice, "boustrophedon", "boustrophedon|trapezoidal", "the decomposition whose cells are swept"},
+          {"direction", ParamType::kDouble, "0", "-360:360|best",
+           "sweep direction in degrees (lanes perpendicular to it), or best: the workspace's main edge directions, 0 and 90 "
+           "tried, the least length + r x turning kept"}};
+}
+
+Capabilities BoustrophedonPlanner::capabilities() const {
+  Capabilities c;
+  c.needsCells = false;
+  c.output = "lines+arcs";
+  c.coverage = "cfree_component";
+  return c;
+}
+
+Plan BoustrophedonPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition& stop) {
+  Plan plan;
+  plan.planner = name();
+  const Problem& problem = ctx.problem;
+  if (!problem.robots.at(0).start) {
+    plan.status = PlanStatus::kNoFreeSpace;
+    plan.message = "no start: nothing of the workspace is free for this robot";
+    return plan;
+  }
+  // the margin μ (boustrophedon.h): a power of two, so r + μ stays a short rational
+  const Rational& r = problem.robots[0].radius;
+  const Box b = problem.workspace.bbox();
+  const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
+  const double mu = std::max(std::ldexp(r.get_d(), -24), std::ldexp(extent, -40));
+  const Rational rPlan = r + exactFromDouble(std::ldexp(1.0, std::ilogb(mu) + 1));
+  std::vector<double> directions;
+  if (params.text("direction") == "best") directions = candidateDirections(problem.workspace);
+  else directions = {params.number("direction")};
+  FramePlan best;
+  double cspace = 0, decompose = 0, sweep = 0;
+  for (double deg : directions) {
+    FramePlan fp = planDirection(problem, rPlan, params.text("decomposition"), deg, stop);
+    cspace += fp.cspaceSeconds;
+    decompose += fp.decomposeSeconds;
+    sweep += fp.planSeconds;
+    if (!best.ok || (fp.ok && (static_cast<int>(fp.status) < static_cast<int>(best.status) ||
+                               (fp.status == best.status && fp.cost < best.cost))))
+      best = std::move(fp);
+  }
+  plan.status = best.status;
+  plan.message = best.message;
+  plan.statistics = best.stats;
+  plan.statistics["directions_tried"] = static_cast<double>(directions.size());
+  plan.timings = {{"cspace", cspace}, {"decompose", decompose}, {"sweep", sweep}};
+  if (best.ok) plan.paths.push_back(std::move(best.path));
+  return plan;
+}
+
+}  // namespace coverkit::planners
