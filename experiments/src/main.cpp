@@ -330,14 +330,14 @@ int main(int argc, char** argv) {
   experiments::BsaExperimentOptions bsaOptions;
   auto* experiment = app.add_subcommand("experiment", "reproduce a paper's experiment: CSV, table, chart (docs/experiments.md)");
   experiment->add_option("name", experimentName,
-                         "bsa-backtracking, tracc-scenarios, coverage-vs-size, coverage-vs-complexity, coverage-vs-shape, coverage-vs-time, or sweep (with --config)")
+                         "bsa-backtracking, tracc-scenarios, decompositions, coverage-vs-size, coverage-vs-complexity, coverage-vs-shape, coverage-vs-time, or sweep (with --config)")
       ->required();
   std::string experimentConfig;
   experiment->add_option("--config", experimentConfig, "the YAML config of a sweep (default for the coverage-vs-* names: experiments/configs/)");
   experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
   bool checkOnly = false;
   experiment->add_flag("--check", checkOnly, "read and check the config, run nothing, write nothing (experiments with a config)");
-  experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (default 100)");
+  experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (bsa-backtracking: default 100; decompositions: worlds per hole count, default 25)");
   experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
   experiment->add_option("--density", bsaOptions.density, "fraction of blocked cells (default 0.05)");
   std::string obstacleKind = "clustered";
@@ -534,8 +534,9 @@ int main(int argc, char** argv) {
     if (*experiment) {
       // options that only some experiments read are refused elsewhere rather than ignored
       for (const char* o : {"--seeds", "--size", "--density", "--obstacles"})
-        if (experiment->count(o) && experimentName != "bsa-backtracking")
-          throw InputError(o, experimentName, "applies to the bsa-backtracking experiment only");
+        if (experiment->count(o) && experimentName != "bsa-backtracking" && !(experimentName == "decompositions" && std::string(o) == "--seeds"))
+          throw InputError(o, experimentName, std::string(o) == "--seeds" ? "applies to the bsa-backtracking and decompositions experiments only"
+                                                                        : "applies to the bsa-backtracking experiment only");
       if (experiment->count("--config") && (experimentName == "bsa-backtracking" || experimentName == "tracc-scenarios"))
         throw InputError("--config", experimentName, "this experiment takes no config (it has options or is fixed)");
       const std::map<std::string, std::string> sweeps{{"coverage-vs-size", "coverage_vs_size.yaml"},
@@ -564,13 +565,20 @@ int main(int argc, char** argv) {
         std::cout << experiments::runSweep(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
         return 0;
       }
+      if (experimentName == "decompositions") {
+        experiments::DecompositionExperimentOptions dopt;
+        if (experiment->count("--seeds")) dopt.seeds = bsaOptions.seeds;
+        std::cout << experiments::runDecompositionExperiment(dopt, experimentOut) << "written: " << experimentOut
+                  << "/results.csv, summary.md, chart.svg\n";
+        return 0;
+      }
       if (experimentName == "tracc-scenarios") {
         std::cout << experiments::runTraccScenarios(experimentOut) << "written: " << experimentOut
                   << "/results.csv, summary.md, scenario-K.grid, .json, .svg\n";
         return 0;
       }
       if (experimentName != "bsa-backtracking")
-        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-complexity, coverage-vs-shape, coverage-vs-size, coverage-vs-time, sweep, tracc-scenarios)");
+        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-complexity, decompositions, coverage-vs-shape, coverage-vs-size, coverage-vs-time, sweep, tracc-scenarios)");
       if (obstacleKind != "clustered" && obstacleKind != "scattered")
         throw InputError("--obstacles", obstacleKind, "must be clustered or scattered");
       bsaOptions.clustered = obstacleKind == "clustered";

@@ -782,4 +782,150 @@ void checkCoverageVsTimeConfig(const std::string& configFile) {
   withConfigErrors(configFile, [&] { return runCoverageVsTimeConfig(configFile, "", true); });
 }
 
+std::string runDecompositionExperiment(const DecompositionExperimentOptions& o, const std::string& outDir) {
+  if (o.seeds < 1 || o.seeds > kDecompositionMaxSeeds)
+    throw InputError("--seeds", std::to_string(o.seeds), "must be 1 to " + std::to_string(kDecompositionMaxSeeds));
+  datasets::checkOutputFolder(outDir, "--out", {"results.csv", "summary.md", "chart.svg"});
+  const std::vector<int> holeCounts{0, 1, 2, 5, 10, 15, 20, 30};
+  const std::vector<datasets::ObstacleShape> shapes{datasets::ObstacleShape::kRotatedRectangle, datasets::ObstacleShape::kConvex,
+                                                    datasets::ObstacleShape::kStar, datasets::ObstacleShape::kDisc};
+  const std::vector<std::string> shapeNames{"rotated", "convex", "stars", "discs"};
+  const std::vector<std::pair<std::string, std::map<std::string, std::string>>> plannerRuns{
+      {"boustrophedon", {{"decomposition", "boustrophedon"}}},
+      {"boustrophedon(trapezoidal)", {{"decomposition", "trapezoidal"}}},
+      {"full_stc", {}},
+      {"smooth_stc", {}}};
+  const Rational r(1, 4);
+  std::ostringstream csv;
+  csv << "world,holes,shape,holes_placed,bcd_cells,tcd_cells,cspace_s,bcd_s,tcd_s,planner,status,valid,plan_s,coverable_coverage,length,turns,"
+         "turning_angle_deg\n";
+  struct Acc {
+    std::vector<double> coverage, length, turns, seconds;
+    std::size_t invalid = 0, failed = 0;
+  };
+  struct Row {
+    std::vector<double> bcd, tcd, bcdSeconds, tcdSeconds, cspaceSeconds, placed;
+    std::map<std::string, Acc> planners;
+  };
+  std::vector<Row> rows(holeCounts.size());
+  for (std::size_t hi = 0; hi < holeCounts.size(); ++hi)
+    for (int seed = 1; seed <= o.seeds; ++seed) {
+      datasets::PolygonWorldSpec spec;
+      spec.width = 20;
+      spec.height = 20;
+      spec.count = holeCounts[hi];
+      spec.minSize = 1;
+      spec.maxSize = 3;
+      const std::size_t si = static_cast<std::size_t>(seed) % shapes.size();
+      spec.shape = shapes[si];
+      spec.seed = static_cast<std::uint64_t>(seed);
+      const Workspace world = datasets::generatePolygonWorld(spec);
+      std::size_t placed = 0;
+      for (const Region& reg : world.regions) placed += reg.holes.size();
+      Problem problem;
+      problem.workspace = world;
+      problem.robots.push_back({r, std::nullopt});
+      const planners::Decomposed bcd = planners::runDecomposition("boustrophedon", problem, {});
+      const planners::Decomposed tcd = planners::runDecomposition("trapezoidal", problem, {});
+      Row& row = rows[hi];
+      row.bcd.push_back(static_cast<double>(bcd.cells.cells.size()));
+      row.tcd.push_back(static_cast<double>(tcd.cells.cells.size()));
+      row.bcdSeconds.push_back(bcd.decomposeSeconds);
+      row.tcdSeconds.push_back(tcd.decomposeSeconds);
+      row.cspaceSeconds.push_back(bcd.cspaceSeconds);
+      row.placed.push_back(static_cast<double>(placed));
+      planners::PlanningContext ctx;
+      try {
+        ctx = planners::makeContext(problem);
+      } catch (const InputError&) {
+        continue;
+      }
+      const CSpace cspace(world, r);
+      MetricOptions mo = defaultMetricOptions();
+      mo.cspace = &cspace;
+      for (const auto& [label, params] : plannerRuns) {
+        const std::string name = label.substr(0, label.find('('));
+        const RunResult res = runOnce(ctx, name, params, 0, {}, mo);
+        double planSeconds = 0;
+        for (const auto& [phase, sec] : res.plan.timings) planSeconds += sec;
+        const Metrics& m = res.metrics;
+        csv << seed << ',' << holeCounts[hi] << ',' << shapeNames[si] << ',' << placed << ',' << bcd.cells.cells.size() << ','
+            << tcd.cells.cells.size() << ',' << fmt(bcd.cspaceSeconds, 4) << ',' << fmt(bcd.decomposeSeconds, 4) << ',' << fmt(tcd.decomposeSeconds, 4)
+            << ',' << label << ',' << toString(res.plan.status) << ',' << (res.validation.valid ? 1 : 0) << ',' << fmt(planSeconds, 4) << ','
+            << fmt(m.coverableCoverage, 5) << ',' << fmt(m.length, 3) << ',' << m.turns << ',' << fmt(m.turningAngleDeg, 1) << '\n';
+        Acc& a = row.planners[label];
+        if (!succeeded(res.plan.status)) {
+          ++a.failed;
+          a.coverage.push_back(0);
+          continue;
+        }
+        if (!res.validation.valid) {
+          ++a.invalid;
+          continue;
+        }
+        a.coverage.push_back(m.coverableCoverage);
+        a.length.push_back(m.length);
+        a.turns.push_back(static_cast<double>(m.turns));
+        a.seconds.push_back(planSeconds);
+      }
+    }
+  std::ostringstream md;
+  md << "# Decompositions: boustrophedon against trapezoidal, and boustrophedon coverage against the STC family\n\n"
+     << o.seeds << " seeded 20×20 polygon worlds per hole count (shapes in turn: rotated rectangles, convex polygons, stars, discs; 1-3 m; "
+     << "the generator places what fits, `holes placed`), r = 0.25, sweep direction 0°. Cells of the exact C-free; times in seconds on this "
+     << "machine (C-space, then the decomposition alone). Coverage: of the coverable region (the start's C-free component ⊕ disc); plans that "
+     << "did not succeed count 0, invalid plans are counted and left out. Plan time includes each planner's own C-space or cells.\n\n"
+     << "| holes asked | holes placed | BCD cells | TCD cells | C-space s | BCD s | TCD s |\n|---|---|---|---|---|---|---|\n";
+  std::map<std::string, std::vector<std::pair<double, double>>> cellSeries, timeSeries, coverageSeries, turnSeries;
+  for (std::size_t hi = 0; hi < holeCounts.size(); ++hi) {
+    const Row& row = rows[hi];
+    const double x = stats(row.placed).mean;
+    md << "| " << holeCounts[hi] << " | " << fmt(x, 1) << " | " << fmt(stats(row.bcd).mean, 1) << " | " << fmt(stats(row.tcd).mean, 1) << " | "
+       << fmt(stats(row.cspaceSeconds).mean, 3) << " | " << fmt(stats(row.bcdSeconds).mean, 3) << " | " << fmt(stats(row.tcdSeconds).mean, 3) << " |\n";
+    cellSeries["boustrophedon"].emplace_back(x, stats(row.bcd).mean);
+    cellSeries["trapezoidal"].emplace_back(x, stats(row.tcd).mean);
+    timeSeries["C-space"].emplace_back(x, stats(row.cspaceSeconds).mean);
+    timeSeries["boustrophedon"].emplace_back(x, stats(row.bcdSeconds).mean);
+    timeSeries["trapezoidal"].emplace_back(x, stats(row.tcdSeconds).mean);
+  }
+  md << "\n| holes asked | planner | plans | mean coverage | min coverage | mean length | mean turns | mean plan s | not planned | invalid |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
+  std::map<std::string, Acc> all;
+  for (std::size_t hi = 0; hi < holeCounts.size(); ++hi)
+    for (const auto& [label, params] : plannerRuns) {
+      const auto it = rows[hi].planners.find(label);
+      if (it == rows[hi].planners.end()) continue;
+      const Acc& a = it->second;
+      const Stats c = stats(a.coverage);
+      md << "| " << holeCounts[hi] << " | " << label << " | " << a.coverage.size() << " | " << fmt(c.mean, 4) << " | " << fmt(c.min, 4) << " | "
+         << fmt(stats(a.length).mean, 1) << " | " << fmt(stats(a.turns).mean, 1) << " | " << fmt(stats(a.seconds).mean, 3) << " | " << a.failed
+         << " | " << a.invalid << " |\n";
+      coverageSeries[label].emplace_back(stats(rows[hi].placed).mean, c.mean);
+      turnSeries[label].emplace_back(stats(rows[hi].placed).mean, stats(a.turns).mean);
+      Acc& t = all[label];
+      t.coverage.insert(t.coverage.end(), a.coverage.begin(), a.coverage.end());
+      t.length.insert(t.length.end(), a.length.begin(), a.length.end());
+      t.turns.insert(t.turns.end(), a.turns.begin(), a.turns.end());
+      t.seconds.insert(t.seconds.end(), a.seconds.begin(), a.seconds.end());
+      t.failed += a.failed;
+      t.invalid += a.invalid;
+    }
+  md << "\nAll worlds:\n\n| planner | plans | mean coverage | min coverage | mean length | mean turns | mean plan s | not planned | invalid |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& [label, params] : plannerRuns) {
+    const Acc& a = all[label];
+    const Stats c = stats(a.coverage);
+    md << "| " << label << " | " << a.coverage.size() << " | " << fmt(c.mean, 4) << " | " << fmt(c.min, 4) << " | " << fmt(stats(a.length).mean, 1)
+       << " | " << fmt(stats(a.turns).mean, 1) << " | " << fmt(stats(a.seconds).mean, 3) << " | " << a.failed << " | " << a.invalid << " |\n";
+  }
+  const std::string svg = lineChartSvg({"cells", "seconds", "mean coverage of the coverable region", "mean turns"}, "holes placed",
+                                       {cellSeries, timeSeries, coverageSeries, turnSeries});
+  datasets::OutputBatch out(outDir);
+  out.addInFolder("results.csv", csv.str());
+  out.addInFolder("summary.md", md.str());
+  out.addInFolder("chart.svg", svg);
+  out.commit();
+  return md.str();
+}
+
 }  // namespace coverkit::experiments

@@ -43,6 +43,16 @@ std::string runCoverageVsTime(const std::string& configFile, const std::string& 
 void checkSweepConfig(const std::string& configFile);
 void checkCoverageVsTimeConfig(const std::string& configFile);
 
+/// Issue 13: boustrophedon (BCD) against trapezoidal (TCD) cells of the exact C-free on seeded 20×20
+/// polygon worlds with 0 … 30 holes (rotated rectangles, convex polygons, stars, discs), their
+/// times, and boustrophedon coverage (on either decomposition) against Full-STC and Smooth-STC on
+/// the same worlds. Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg; returns the summary.
+constexpr int kDecompositionMaxSeeds = 10'000;
+struct DecompositionExperimentOptions {
+  int seeds = 25;   ///< worlds per hole count
+};
+std::string runDecompositionExperiment(const DecompositionExperimentOptions& options, const std::string& outDir);
+
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);
 

@@ -306,9 +306,25 @@ CurveRegion regionOf(const CPolygonWithHoles& pwh) {
 
 }  // namespace
 
+namespace {
+CellDecomposition decomposeImpl(const CSpace& space, DecompositionRule rule, const std::string& method, const Rational& gridSize,
+                                const Point& gridOrigin, const std::vector<Rational>* givenX, const std::vector<Rational>* givenY);
+}
+
 CellDecomposition decomposeCSpace(const CSpace& space, DecompositionRule rule, const std::string& method, const Rational& gridSize,
                                   const Point& gridOrigin) {
   if (rule == DecompositionRule::kGrid && gridSize <= 0) throw std::invalid_argument("decomposeCSpace: grid size must be > 0");
+  return decomposeImpl(space, rule, method, gridSize, gridOrigin, nullptr, nullptr);
+}
+
+CellDecomposition decomposeAlongLines(const CSpace& space, const std::vector<Rational>& xs, const std::vector<Rational>& ys,
+                                      const std::string& method) {
+  return decomposeImpl(space, DecompositionRule::kGrid, method, 0, Point{}, &xs, &ys);
+}
+
+namespace {
+CellDecomposition decomposeImpl(const CSpace& space, DecompositionRule rule, const std::string& method, const Rational& gridSize,
+                                const Point& gridOrigin, const std::vector<Rational>* givenX, const std::vector<Rational>* givenY) {
   CellDecomposition d;
   d.method = method;
   auto exact = std::make_shared<detail::ExactCells>();
@@ -335,7 +351,15 @@ CellDecomposition decomposeCSpace(const CSpace& space, DecompositionRule rule, c
     }
     std::vector<Rational> xs, ys;
     std::map<Rational, std::vector<CoordNT>> vertexY;   // real vertices by rational x
-    if (rule == DecompositionRule::kGrid) {
+    auto inside = [](const Rational& v, const CoordNT& lo, const CoordNT& hi) {
+      return CGAL::compare(CoordNT(ft(v)), lo) == CGAL::LARGER && CGAL::compare(CoordNT(ft(v)), hi) == CGAL::SMALLER;
+    };
+    if (givenX) {
+      for (const Rational& x : *givenX)
+        if (inside(x, xmin, xmax)) xs.push_back(x);
+      for (const Rational& y : *givenY)
+        if (inside(y, ymin, ymax)) ys.push_back(y);
+    } else if (rule == DecompositionRule::kGrid) {
       // grid lines strictly inside the component's extent
       const Rational lo = Rational(std::floor(bx0)) - 1, hi = Rational(std::ceil(bx1)) + 1;
       Rational k0 = (lo - gridOrigin.x) / gridSize;
@@ -520,6 +544,8 @@ CellDecomposition decomposeCSpace(const CSpace& space, DecompositionRule rule, c
   d.exact = std::move(exact);
   return d;
 }
+
+}  // namespace
 
 bool CellDecomposition::interval(int cell, double x, double& lo, double& hi) const {
   lo = HUGE_VAL;

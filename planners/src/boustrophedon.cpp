@@ -452,6 +452,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     fp.message = std::to_string(skipped) + " cell(s) could not be reached or swept";
   }
   fp.cost = fp.path.length() + r * turning(fp.path);
+  fp.stats["cost"] = fp.cost;
   fp.planSeconds = since(t0);
   return fp;
 }

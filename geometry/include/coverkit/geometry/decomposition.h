@@ -119,6 +119,12 @@ struct CellDecomposition {
 CellDecomposition decomposeCSpace(const CSpace& space, DecompositionRule rule, const std::string& method,
                                   const Rational& gridSize = 0, const Point& gridOrigin = {});
 
+/// C-free cut by the vertical lines x = xs[i] and the horizontal lines y = ys[j] (rational, any
+/// order; lines outside a component are ignored): each connected piece of C-free between them is a
+/// cell. The building block for models of one's own (docs/adding-a-decomposition.md).
+CellDecomposition decomposeAlongLines(const CSpace& space, const std::vector<Rational>& xs, const std::vector<Rational>& ys,
+                                      const std::string& method);
+
 /// What the contract test checks, exactly (CGAL Boolean operations on the cells' exact regions).
 struct DecompositionCheck {
   bool disjoint = true;        ///< no two cells share an interior point

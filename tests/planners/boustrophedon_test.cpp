@@ -1,0 +1,101 @@
+// The boustrophedon planner (issue 13): valid on every world (exact validator), covers the start's
+// C-free component, follows the sweep direction asked for, reports what it leaves behind gaps
+// exactly 2r wide, refuses bad parameters.
+#include "helpers/checkers.h"
+#include "helpers/worlds.h"
+
+#include <coverkit/datasets/generators.h>
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/registry.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+
+using namespace coverkit;
+
+namespace {
+
+Workspace seeded(std::uint64_t seed, int count, datasets::ObstacleShape shape) {
+  datasets::PolygonWorldSpec p;
+  p.width = 14;
+  p.height = 10;
+  p.seed = seed;
+  p.count = count;
+  p.shape = shape;
+  return datasets::generatePolygonWorld(p);
+}
+
+}  // namespace
+
+TEST(Boustrophedon, ValidAndCoversSeededWorlds) {
+  double sum = 0, least = 1;
+  int n = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto shape = static_cast<datasets::ObstacleShape>(seed % 7);
+    const int count = static_cast<int>((seed * 7) % 16);
+    const auto ctx = testing_helpers::contextFor(seeded(seed, count, shape), Rational(1, 4));
+    for (const char* decomposition : {"boustrophedon", "trapezoidal"}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + " " + decomposition);
+      const Plan plan = planners::runPlanner("boustrophedon", ctx, {{"decomposition", decomposition}});
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+      EXPECT_EQ(plan.status, PlanStatus::kExactSolution) << plan.message;
+      double c = 0;
+      EXPECT_TRUE(testing_helpers::coversCFreeComponent(ctx, plan, 0.96, &c));
+      sum += c;
+      least = std::min(least, c);
+      ++n;
+    }
+  }
+  std::cout << n << " plans: mean coverage of the coverable region " << sum / n << ", least " << least << "\n";
+  EXPECT_GE(sum / n, 0.99);
+}
+
+TEST(Boustrophedon, FollowsArcsAndIsDeterministic) {
+  const auto ctx = testing_helpers::contextFor(seeded(5, 6, datasets::ObstacleShape::kDisc), Rational(3, 10));
+  const Plan a = planners::runPlanner("boustrophedon", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, a));
+  const auto arcs = std::count_if(a.paths[0].segments.begin(), a.paths[0].segments.end(),
+                                  [](const PathSegment& s) { return s.kind == PathSegment::Kind::kArc; });
+  EXPECT_GT(arcs, 0);   // the sweep runs along the C-obstacles' arcs
+  EXPECT_EQ(testing_helpers::pathJsonOf(a), testing_helpers::pathJsonOf(planners::runPlanner("boustrophedon", ctx, {})));
+}
+
+TEST(Boustrophedon, SweepsInTheDirectionAskedAndBestIsNoWorse) {
+  const auto ctx = testing_helpers::contextFor(seeded(3, 5, datasets::ObstacleShape::kRotatedRectangle), Rational(1, 4));
+  const Plan zero = planners::runPlanner("boustrophedon", ctx, {{"direction", "0"}});
+  const Plan tilted = planners::runPlanner("boustrophedon", ctx, {{"direction", "30"}});
+  const Plan best = planners::runPlanner("boustrophedon", ctx, {{"direction", "best"}});
+  for (const Plan* p : {&zero, &tilted, &best}) {
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, *p));
+    EXPECT_TRUE(testing_helpers::coversCFreeComponent(ctx, *p, 0.96));
+  }
+  EXPECT_NEAR(tilted.statistics.at("direction_degrees"), 30, 1e-3);
+  EXPECT_GE(best.statistics.at("directions_tried"), 2);
+  EXPECT_LE(best.statistics.at("cost"), zero.statistics.at("cost") + 1e-9);
+}
+
+TEST(Boustrophedon, ReportsWhatLiesBehindAGapExactly2rWide) {
+  // two obstacles leave a gap exactly 2r = 1 wide (y from 1.5 to 2.5) between the halves of the box
+  const Workspace w = testing_helpers::boxWith(
+      {{{ratio(9, 2), ratio(1, 2)}, {ratio(11, 2), ratio(1, 2)}, {ratio(11, 2), ratio(3, 2)}, {ratio(9, 2), ratio(3, 2)}},
+       {{ratio(9, 2), ratio(5, 2)}, {ratio(11, 2), ratio(5, 2)}, {ratio(11, 2), ratio(7, 2)}, {ratio(9, 2), ratio(7, 2)}}},
+      10, 4);
+  const auto ctx = testing_helpers::contextFor(w, Rational(1, 2), Point{1, 2});
+  const Plan plan = planners::runPlanner("boustrophedon", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+  EXPECT_EQ(plan.status, PlanStatus::kPartialCoverage);
+  EXPECT_GT(plan.statistics.at("cells_behind_exact_gaps"), 0);
+  EXPECT_GT(plan.statistics.at("area_behind_exact_gaps"), 2);
+  for (const PathSegment& s : plan.paths[0].segments) EXPECT_LE(std::max(s.from.x, s.to.x), 5.0);   // stays on its side
+}
+
+TEST(Boustrophedon, RefusesBadParameters) {
+  const auto ctx = testing_helpers::contextFor(testing_helpers::boxWith({}), Rational(1, 2));
+  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
+           {"direction", "north"}, {"direction", "1e9"}, {"decomposition", "grid"}, {"decomposition", "voronoi"}}) {
+    const std::string message = testing_helpers::inputErrorMessage([&] { planners::runPlanner("boustrophedon", ctx, {{k, v}}); });
+    EXPECT_NE(message.find(k + "=" + v), std::string::npos) << message;
+  }
+}
