@@ -137,7 +137,7 @@ expect_bad "bsa: --density -0.1" "--density: -0.1: must be in [0, 1)" experiment
 expect_bad "bsa: --density where S is walled in on nearly every map" "--density: 0.6: the start S(0, 0) is walled in" experiment bsa-backtracking --seeds 3 --density 0.6 --out "$T/bsa-out"
 expect_bad "bsa: --out is an existing file" "existing.json: --out: exists and is not a folder" experiment bsa-backtracking --seeds 1 --out "$T/existing.json"
 expect_bad "tracc: --out is an existing file" "existing.json: --out: exists and is not a folder" experiment tracc-scenarios --out "$T/existing.json"
-expect_bad "--seeds given to a sweep" "--seeds: coverage-vs-size: applies to the bsa-backtracking experiment only" experiment coverage-vs-size --seeds 3 --out "$T/cfg-out"
+expect_bad "--seeds given to a sweep" "--seeds: coverage-vs-size: applies to the bsa-backtracking and decompositions experiments only" experiment coverage-vs-size --seeds 3 --out "$T/cfg-out"
 expect_bad "--config given to bsa-backtracking" "--config: bsa-backtracking: this experiment takes no config" experiment bsa-backtracking --config "$T/cvs.yaml" --out "$T/cfg-out"
 # experiments: configs (each would run the whole default experiment, or crash, before)
 cfg() { printf -- "$2" > "$T/cfg-$1.yaml"; echo "$T/cfg-$1.yaml"; }
@@ -323,6 +323,26 @@ expect_bad "path planner a number" "planner.json: planner: expected a string, fo
 expect_bad "path arc ccw a string" "ccw.json: robots[0].segments[0].ccw: expected true or false, found string" evaluate --map "$T/room.wkt" --path "$T/ccw.json"
 expect_bad "path csv nan" "nan.csv: line 3: non-finite x 'nan'" evaluate --map "$T/room.wkt" --radius 0.25 --path "$T/nan.csv"
 # --------------------------------------------------------------------------------------------- end of the readers block
+
+# --------------------------------------------------------------------------------------------- decompositions (issue 13)
+"$CK" list | grep -q '^decomposition boustrophedon:' && "$CK" list | grep -q '^decomposition trapezoidal:' && "$CK" list | grep -q '^decomposition grid:' && ok || bad "list: decompositions"
+"$CK" decompose --map "$DATA/pillars.wkt" --radius 0.25 --method boustrophedon --out "$T/cells.json" --picture "$T/cells.svg" > "$T/dec.out" &&
+  grep -q '"format": "coverkit.cells/1"' "$T/cells.json" && grep -q '"type": "arc"' "$T/cells.json" && [ -s "$T/cells.svg" ] &&
+  grep -q '^boustrophedon: 10 cell(s)' "$T/dec.out" && ok || bad "decompose json: $(cat "$T/dec.out")"
+"$CK" decompose --map "$DATA/pillars.wkt" --radius 0.25 --method trapezoidal --param direction=30 --out "$T/cells.geojson" > "$T/dec.out" &&
+  grep -q '"kind": "cell"' "$T/cells.geojson" && grep -q '"neighbours"' "$T/cells.geojson" && grep -q 'direction 29.99' "$T/dec.out" && ok || bad "decompose geojson: $(cat "$T/dec.out")"
+"$CK" decompose --map "$DATA/pillars.wkt" --radius 0.25 --method grid --out "$T/g1.json" > /dev/null && "$CK" decompose --map "$DATA/pillars.wkt" --radius 0.25 --method grid --out "$T/g2.json" > /dev/null &&
+  cmp -s "$T/g1.json" "$T/g2.json" && ok || bad "decompose not deterministic"
+"$CK" plan --map "$DATA/pillars.wkt" --radius 0.25 --planner boustrophedon --param direction=best --out "$T/bou.json" > /dev/null &&
+  "$CK" evaluate --map "$DATA/pillars.wkt" --path "$T/bou.json" --json | grep -q '"valid": true' && ok || bad "plan boustrophedon"
+expect_bad "decompose: unknown method" "--method: voronoi: unknown decomposition (known: boustrophedon, grid, trapezoidal)" decompose --map "$T/room.wkt" --radius 0.25 --method voronoi --out "$T/out.json"
+expect_bad "decompose: direction not a number" "--param: direction=north: 'north' is not a number" decompose --map "$T/room.wkt" --radius 0.25 --method boustrophedon --param direction=north --out "$T/out.json"
+expect_bad "decompose: direction out of range" "--param: direction=720: out of range [-360:360]" decompose --map "$T/room.wkt" --radius 0.25 --method trapezoidal --param direction=720 --out "$T/out.json"
+expect_bad "decompose: parameter of another model" "unknown parameter of decomposition 'grid'" decompose --map "$T/room.wkt" --radius 0.25 --method grid --param direction=10 --out "$T/out.json" --picture "$T/out.png"
+expect_bad "decompose: C-free empty" "C-free is empty: a disc of this radius fits nowhere" decompose --map "$T/room.wkt" --radius 2.5 --method boustrophedon --out "$T/out.json" --picture "$T/out.png"
+expect_bad "decompose: bad output format" "unknown output format" decompose --map "$T/room.wkt" --radius 0.25 --method boustrophedon --out "$T/out.csv"
+expect_bad "plan boustrophedon: direction not a number" "--param: direction=west: must be a number in [-360:360] or best" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param direction=west --out "$T/out.json"
+expect_bad "plan boustrophedon: unknown decomposition" "--param: decomposition=grid: must be one of boustrophedon|trapezoidal" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param decomposition=grid --out "$T/out.json"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
