@@ -1,6 +1,7 @@
 // Grid → exact polygons, and exact validation of polygon input.
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/graph/grid_search.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,26 +21,8 @@ Workspace gridToWorkspace(const OccupancyGrid& g, const std::string& name) {
   const int W = g.width, H = g.height;
   auto freeAt = [&](int c, int r) { return c >= 0 && r >= 0 && c < W && r < H && !g.at(c, r); };
   // 4-connected free components
-  std::vector<int> label(static_cast<std::size_t>(W) * H, -1);
-  int comps = 0;
-  std::vector<int> stack;
-  for (int r = 0; r < H; ++r)
-    for (int c = 0; c < W; ++c) {
-      if (!freeAt(c, r) || label[static_cast<std::size_t>(r) * W + c] >= 0) continue;
-      label[static_cast<std::size_t>(r) * W + c] = comps;
-      stack.push_back(r * W + c);
-      while (!stack.empty()) {
-        const int v = stack.back();
-        stack.pop_back();
-        for (int d = 0; d < 4; ++d) {
-          const int cc = v % W + kDx[d], rr = v / W + kDy[d];
-          if (!freeAt(cc, rr) || label[static_cast<std::size_t>(rr) * W + cc] >= 0) continue;
-          label[static_cast<std::size_t>(rr) * W + cc] = comps;
-          stack.push_back(rr * W + cc);
-        }
-      }
-      ++comps;
-    }
+  const std::vector<int> label = graph::gridComponents(W, H, [&](int v) { return !g.at(v % W, v / W); });
+  const int comps = label.empty() ? 0 : *std::max_element(label.begin(), label.end()) + 1;
   // Directed boundary edges, free pixel on the left (counter-clockwise around each free pixel).
   // out[v]: bit d when an edge leaves lattice vertex v in direction d.
   const int VW = W + 1;

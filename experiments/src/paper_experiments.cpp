@@ -9,6 +9,7 @@
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/graph/grid_search.h>
 #include <coverkit/planners/registry.h>
 
 #include <yaml-cpp/yaml.h>
@@ -121,25 +122,10 @@ std::string runBsaExperiment(const BsaExperimentOptions& o, const std::string& o
     // a map whose start region holds under half of the free cells (S walled in by obstacles) is
     // not a coverage test: it is counted and replaced by the next seed
     {
-      std::vector<char> seen(static_cast<std::size_t>(o.size) * o.size, 0);
-      std::vector<int> stack{0};
-      seen[0] = 1;
+      const std::vector<int> comp = graph::gridComponents(o.size, o.size, [&](int v) { return !grid.blocked[static_cast<std::size_t>(v)]; });
       std::size_t reach = 0, free = 0;
       for (auto b : grid.blocked) free += !b;
-      while (!stack.empty()) {
-        const int v = stack.back();
-        stack.pop_back();
-        ++reach;
-        const int c = v % o.size, r = v / o.size;
-        for (auto [dc, dr] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-          const int nc = c + dc, nr = r + dr;
-          if (nc < 0 || nr < 0 || nc >= o.size || nr >= o.size) continue;
-          const auto u = static_cast<std::size_t>(nr * o.size + nc);
-          if (grid.blocked[u] || seen[u]) continue;
-          seen[u] = 1;
-          stack.push_back(static_cast<int>(u));
-        }
-      }
+      for (int k : comp) reach += k == comp[0];  // cell 0 is S, kept free above
       if (2 * reach < free) {
         ++skipped;
         // a density at which S is walled in on nearly every map would never end

@@ -1,8 +1,8 @@
 // BSA with A* backtracking. See bsa.h for the reference and the decisions.
 #include <coverkit/graph/grid_graph.h>
+#include <coverkit/graph/grid_search.h>
 #include <coverkit/planners/bsa.h>
 
-#include "grid_astar.h"
 #include "walk_path.h"
 
 #include <algorithm>
@@ -142,7 +142,7 @@ Plan BsaPlanner::plan(const PlanningContext& context, const ParamSet& params, co
     CellIndex cur = s;
     enter(cur);
     int heading = filling_ == Filling::kSpiral ? 0 : first;
-    GridAStar astar(cols, rows, true);
+    graph::GridAStar astar(cols, rows, true);
     std::vector<int> explored;
     while (!timedOut) {
       // filling

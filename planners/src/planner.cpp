@@ -1,4 +1,5 @@
 #include <coverkit/geometry/error.h>
+#include <coverkit/graph/grid_search.h>
 #include <coverkit/planners/planner.h>
 
 #include <algorithm>
@@ -88,38 +89,28 @@ long ParamSet::integer(const std::string& name) const { return static_cast<long>
 bool ParamSet::flag(const std::string& name) const { return text(name) == "true"; }
 
 std::optional<Point> defaultStart(const CellGrid& cells) {
-  // Largest 4-connected component over a predicate; returns its first cell in row order.
+  // Largest 4-connected component over a predicate (the first of equal ones in row order); returns
+  // its first cell in row order.
   auto firstOfLargest = [](int cols, int rows, auto&& ok) -> std::optional<CellIndex> {
-    std::vector<int> comp(static_cast<std::size_t>(cols) * rows, -1);
+    const std::vector<int> comp = graph::gridComponents(cols, rows, [&](int v) { return ok(v % cols, v / cols); });
+    std::vector<std::size_t> size;
+    std::vector<int> first;  // components are numbered in row order of their first cell
+    for (int v = 0; v < cols * rows; ++v) {
+      const int k = comp[static_cast<std::size_t>(v)];
+      if (k < 0) continue;
+      if (static_cast<std::size_t>(k) == size.size()) {
+        size.push_back(0);
+        first.push_back(v);
+      }
+      ++size[static_cast<std::size_t>(k)];
+    }
     std::size_t bestSize = 0;
     int bestFirst = -1;
-    std::vector<int> stack;
-    int id = 0;
-    for (int v = 0; v < cols * rows; ++v) {
-      if (!ok(v % cols, v / cols) || comp[static_cast<std::size_t>(v)] >= 0) continue;
-      std::size_t size = 0;
-      comp[static_cast<std::size_t>(v)] = id;
-      stack.push_back(v);
-      while (!stack.empty()) {
-        const int u = stack.back();
-        stack.pop_back();
-        ++size;
-        const int c = u % cols, r = u / cols;
-        const int nb[4][2] = {{c + 1, r}, {c - 1, r}, {c, r + 1}, {c, r - 1}};
-        for (auto& n : nb) {
-          if (n[0] < 0 || n[1] < 0 || n[0] >= cols || n[1] >= rows || !ok(n[0], n[1])) continue;
-          const int w = n[1] * cols + n[0];
-          if (comp[static_cast<std::size_t>(w)] >= 0) continue;
-          comp[static_cast<std::size_t>(w)] = id;
-          stack.push_back(w);
-        }
+    for (std::size_t k = 0; k < size.size(); ++k)
+      if (size[k] > bestSize) {
+        bestSize = size[k];
+        bestFirst = first[k];
       }
-      if (size > bestSize) {
-        bestSize = size;
-        bestFirst = v;  // v is the first cell of its component in row order
-      }
-      ++id;
-    }
     if (bestFirst < 0) return std::nullopt;
     return CellIndex{bestFirst % cols, bestFirst / cols};
   };

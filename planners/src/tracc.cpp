@@ -1,8 +1,8 @@
 // TRACC. See tracc.h for the reference and the decisions.
+#include <coverkit/graph/grid_search.h>
 #include <coverkit/planners/sensor.h>
 #include <coverkit/planners/tracc.h>
 
-#include "grid_astar.h"
 #include "walk_path.h"
 
 #include <algorithm>
@@ -105,7 +105,7 @@ void TraccPlanner::runOnce(const PlanningContext& ctx, CellIndex s, const ParamS
   const std::size_t at = static_cast<std::size_t>(std::find(flow.begin(), flow.end(), id(s)) - flow.begin());
   const std::size_t nFlow = flow.size();
 
-  GridAStar astar(cols, rows, false);
+  graph::GridAStar astar(cols, rows, false);
   std::vector<int> explored;
   std::size_t detours = 0, replans = 0;
   bool timedOut = false;
