@@ -332,7 +332,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   std::vector<PathSegment> segs;
   auto cur = [&] { return segs.empty() ? entry : segs.back().to; };
   int here = startCell;
-  std::size_t skipped = 0, lanesTotal = 0;
+  std::size_t skipped = 0, lanesTotal = 0, unreached = 0, broken = 0;
   bool timedOut = false;
   for (int cell : order) {
     if (stop.expired()) {
@@ -364,23 +364,36 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     auto end = [&](std::size_t i, bool bottom) { return bottom ? lanes[i].first : lanes[i].second; };
     const PointD first = end(0, bottomFirst);
     // get there: through the cells of a shortest path of the cell graph
-    std::vector<PathSegment> route;
-    bool reached = true;
-    if (here != cell) {
+    auto routeFrom = [&](PointD at, std::vector<PathSegment>& route) {
+      if (here == cell) return walk.connect(cell, at, first, route);
       const std::vector<int> via = g.shortestPath(here, cell);
-      if (via.empty()) reached = false;
-      PointD at = cur();
-      for (std::size_t k = 0; reached && k + 1 < via.size(); ++k) {
+      if (via.empty()) return false;
+      for (std::size_t k = 0; k + 1 < via.size(); ++k) {
         const PointD door = walk.door(via[k], via[k + 1]);
-        reached = walk.connect(via[k], at, door, route);
+        if (!walk.connect(via[k], at, door, route)) return false;
         at = door;
       }
-      if (reached) reached = walk.connect(cell, at, first, route);
-    } else {
-      reached = walk.connect(cell, cur(), first, route);
+      return walk.connect(cell, at, first, route);
+    };
+    std::vector<PathSegment> route;
+    bool reached = routeFrom(cur(), route);
+    // a sweep may end where no split of the chord reaches the door (a corner of a ragged cell):
+    // back along the path's last line segments (valid, so valid reversed) and try from there
+    for (std::size_t back = 1; !reached && back <= 16 && back <= segs.size(); ++back) {
+      const PathSegment& last = segs[segs.size() - back];
+      if (last.kind != PathSegment::Kind::kLine) break;
+      route.clear();
+      for (std::size_t k = 1; k <= back; ++k) {
+        const PathSegment& sgm = segs[segs.size() - k];
+        route.push_back(PathSegment::line(sgm.to, sgm.from));
+      }
+      std::vector<PathSegment> onward;
+      reached = routeFrom(last.from, onward);
+      if (reached) route.insert(route.end(), onward.begin(), onward.end());
     }
     if (!reached) {
       ++skipped;
+      ++unreached;
       continue;
     }
     segs.insert(segs.end(), route.begin(), route.end());
@@ -397,6 +410,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       if (ok && j > 0) ok = walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
     }
     for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
+    if (!ok) ++broken;
     if (!ok) ++skipped;   // what was swept before the break stays; the cell counts as not done
     here = cell;
   }
@@ -417,6 +431,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   fp.path = std::move(path);
   fp.stats["lanes"] = static_cast<double>(lanesTotal);
   fp.stats["skipped_cells"] = static_cast<double>(skipped);
+  fp.stats["cells_unreached"] = static_cast<double>(unreached);
+  fp.stats["sweeps_broken"] = static_cast<double>(broken);
   fp.stats["cells_in_component"] = static_cast<double>(order.size());
   fp.stats["exact_checks"] = static_cast<double>(walk.checks());
   // components of the plan's C-free joined to the start's only where C-free is pinched to zero
