@@ -358,20 +358,23 @@ std::string pathFileContent(const std::string& file, const PathDocument& doc) {
 
 void writePathFile(const std::string& file, const PathDocument& doc) { writeFileAtomically(file, pathFileContent(file, doc)); }
 
+/// A region's area, outer boundary and holes (segments and arcs), as the C-space and cell files write it.
+json regionJson(const CurveRegion& r) {
+  json outer = json::array(), holes = json::array();
+  for (const PathSegment& s : r.outer.pieces) outer.push_back(segmentJson(s));
+  for (const CurveLoop& h : r.holes) {
+    json hole = json::array();
+    for (const PathSegment& s : h.pieces) hole.push_back(segmentJson(s));
+    holes.push_back(hole);
+  }
+  return {{"area", r.area}, {"outer", outer}, {"holes", holes}};
+}
+
 std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc) {
   const std::string e = ext(file);
   auto regions = [](const std::vector<CurveRegion>& rs) {
     json out = json::array();
-    for (const CurveRegion& r : rs) {
-      json outer = json::array(), holes = json::array();
-      for (const PathSegment& s : r.outer.pieces) outer.push_back(segmentJson(s));
-      for (const CurveLoop& h : r.holes) {
-        json hole = json::array();
-        for (const PathSegment& s : h.pieces) hole.push_back(segmentJson(s));
-        holes.push_back(hole);
-      }
-      out.push_back({{"area", r.area}, {"outer", outer}, {"holes", holes}});
-    }
+    for (const CurveRegion& r : rs) out.push_back(regionJson(r));
     return out;
   };
   if (e == ".json") {
@@ -425,15 +428,10 @@ std::string cellsFileContent(const std::string& file, const CellsDocument& doc) 
   if (e == ".json") {
     json cells = json::array();
     for (std::size_t i = 0; i < doc.cells.size(); ++i) {
-      const CurveRegion& r = doc.cells[i].region;
-      json outer = json::array(), holes = json::array();
-      for (const PathSegment& s : r.outer.pieces) outer.push_back(segmentJson(s));
-      for (const CurveLoop& h : r.holes) {
-        json hole = json::array();
-        for (const PathSegment& s : h.pieces) hole.push_back(segmentJson(s));
-        holes.push_back(hole);
-      }
-      cells.push_back({{"index", i}, {"area", r.area}, {"neighbours", doc.cells[i].neighbours}, {"outer", outer}, {"holes", holes}});
+      json cell = regionJson(doc.cells[i].region);
+      cell["index"] = i;
+      cell["neighbours"] = doc.cells[i].neighbours;
+      cells.push_back(cell);
     }
     json walls = json::array();
     for (const auto& w : doc.walls) walls.push_back({{"a", w.a}, {"b", w.b}, {"from", pt(w.from)}, {"to", pt(w.to)}});

@@ -295,6 +295,16 @@ std::string lineChartSvg(const std::vector<std::string>& titles, const std::stri
   return svg.str();
 }
 
+/// results.csv, summary.md and chart.svg, written together into `outDir`; returns the summary.
+std::string writeResults(const std::string& outDir, const std::string& csv, const std::string& md, const std::string& svg) {
+  datasets::OutputBatch out(outDir);
+  out.addInFolder("results.csv", csv);
+  out.addInFolder("summary.md", md);
+  out.addInFolder("chart.svg", svg);
+  out.commit();
+  return md;
+}
+
 /// "line N: " for a node read from a file, "" otherwise.
 std::string lineOf(const YAML::Node& n) {
   const YAML::Mark m = n.Mark();
@@ -642,12 +652,7 @@ std::string runSweepConfig(const std::string& configFile, const std::string& out
   const std::string xLabel = vary == "radius" ? "robot radius r" : vary == "obstacles" ? "obstacles per world" : "obstacle shape (see summary)";
   const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns", "mean total turning angle (°)"},
                                        xLabel, {coverageSeries, overlapSeries, turnSeries, angleSeries});
-  datasets::OutputBatch out(outDir);
-  out.addInFolder("results.csv", csv.str());
-  out.addInFolder("summary.md", md.str());
-  out.addInFolder("chart.svg", svg);
-  out.commit();
-  return md.str();
+  return writeResults(outDir, csv.str(), md.str(), svg);
 }
 
 /// The first `length` of a path made of lines (arcs through their polyline), as a path.
@@ -752,12 +757,7 @@ std::string runCoverageVsTimeConfig(const std::string& configFile, const std::st
     for (int k = 0; k <= steps; ++k) chart[p].emplace_back(100.0 * k / steps, meanByStep[p][static_cast<std::size_t>(k)]);
   }
   const std::string svg = lineChartSvg({"mean coverage of the coverable region"}, "time, % of the slowest planner's", {chart});
-  datasets::OutputBatch out(outDir);
-  out.addInFolder("results.csv", csv.str());
-  out.addInFolder("summary.md", md.str());
-  out.addInFolder("chart.svg", svg);
-  out.commit();
-  return md.str();
+  return writeResults(outDir, csv.str(), md.str(), svg);
 }
 }  // namespace
 
@@ -906,12 +906,7 @@ std::string runDecompositionExperiment(const DecompositionExperimentOptions& o, 
   }
   const std::string svg = lineChartSvg({"cells", "seconds", "mean coverage of the coverable region", "mean turns"}, "holes placed",
                                        {cellSeries, timeSeries, coverageSeries, turnSeries});
-  datasets::OutputBatch out(outDir);
-  out.addInFolder("results.csv", csv.str());
-  out.addInFolder("summary.md", md.str());
-  out.addInFolder("chart.svg", svg);
-  out.commit();
-  return md.str();
+  return writeResults(outDir, csv.str(), md.str(), svg);
 }
 
 }  // namespace coverkit::experiments

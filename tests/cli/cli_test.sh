@@ -341,6 +341,8 @@ expect_bad "decompose: direction out of range" "--param: direction=720: out of r
 expect_bad "decompose: parameter of another model" "unknown parameter of decomposition 'grid'" decompose --map "$T/room.wkt" --radius 0.25 --method grid --param direction=10 --out "$T/out.json" --picture "$T/out.png"
 expect_bad "decompose: C-free empty" "C-free is empty: a disc of this radius fits nowhere" decompose --map "$T/room.wkt" --radius 2.5 --method boustrophedon --out "$T/out.json" --picture "$T/out.png"
 expect_bad "decompose: bad output format" "unknown output format" decompose --map "$T/room.wkt" --radius 0.25 --method boustrophedon --out "$T/out.csv"
+expect_bad "experiment decompositions: --seeds 0" "--seeds: 0: must be 1 to 10000" experiment decompositions --seeds 0 --out "$T/dec-out"
+expect_bad "experiment decompositions: --size" "--size: decompositions: applies to the bsa-backtracking experiment only" experiment decompositions --size 10 --out "$T/dec-out"
 expect_bad "plan boustrophedon: direction not a number" "--param: direction=west: must be a number in [-360:360] or best" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param direction=west --out "$T/out.json"
 expect_bad "plan boustrophedon: unknown decomposition" "--param: decomposition=grid: must be one of boustrophedon|trapezoidal" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param decomposition=grid --out "$T/out.json"
 
