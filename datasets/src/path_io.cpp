@@ -454,7 +454,7 @@ std::string cellsFileContent(const std::string& file, const CellsDocument& doc) 
   } else if (e == ".geojson") {
     std::vector<CurveRegion> regions;
     for (const auto& c : doc.cells) regions.push_back(c.region);
-    const std::vector<SampledRegion> sampled = sampleRegions(regions, kArcSampleTolerance, true);
+    const std::vector<SampledRegion> sampled = doc.sampled.size() == doc.cells.size() ? doc.sampled : sampleRegions(regions, kArcSampleTolerance, true);
     json fc{{"type", "FeatureCollection"}, {"features", json::array()}};
     for (std::size_t i = 0; i < sampled.size(); ++i) {
       json rings = json::array({ringJson(sampled[i].outer)});
@@ -462,7 +462,8 @@ std::string cellsFileContent(const std::string& file, const CellsDocument& doc) 
       fc["features"].push_back({{"type", "Feature"},
                                 {"properties", {{"kind", "cell"}, {"index", i}, {"area", doc.cells[i].region.area},
                                                 {"neighbours", doc.cells[i].neighbours}, {"method", doc.method},
-                                                {"arc_tolerance", kArcSampleTolerance}}},
+                                                {"arc_tolerance", kArcSampleTolerance},
+                                                {"vertices_outside", i < doc.unplaced.size() ? doc.unplaced[i] : 0}}},
                                 {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
     }
     return fc.dump(1) + "\n";

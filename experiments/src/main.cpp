@@ -414,6 +414,9 @@ int main(int argc, char** argv) {
         const PointD a = w.vertical ? PointD{w.at, w.lo} : PointD{w.lo, w.at}, b = w.vertical ? PointD{w.at, w.hi} : PointD{w.hi, w.at};
         doc.walls.push_back({w.a, w.b, dec.cells.rotation.inverse(a), dec.cells.rotation.inverse(b)});
       }
+      std::string outExt = fs::path(out).extension().string();
+      for (char& ch : outExt) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (outExt == ".geojson") doc.sampled = sampledCells(dec.cells, datasets::kArcSampleTolerance, &doc.unplaced);
       progress.step("writing");
       datasets::OutputBatch outputs;
       outputs.add(out, datasets::cellsFileContent(out, doc));

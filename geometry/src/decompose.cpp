@@ -2,11 +2,14 @@
 #include <coverkit/geometry/decomposition.h>
 #include <coverkit/geometry/error.h>
 
+#include <coverkit/geometry/sampling.h>
+
 #include "circle_segment_area.h"
 #include "cspace_access.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -610,20 +613,71 @@ std::vector<SidePiece> CellDecomposition::side(int cell, bool top, double x0, do
   return out;
 }
 
-int CellDecomposition::locate(const Point& p) const {
+bool CellDecomposition::contains(int cell, const Point& p) const {
   const double px = p.x.get_d(), py = p.y.get_d();
+  const double sx = 1e-9 * (1 + std::abs(px)), sy = 1e-9 * (1 + std::abs(py));
+  const DecomposedCell& c = cells.at(static_cast<std::size_t>(cell));
+  if (px < c.xmin - sx || px > c.xmax + sx || py < c.ymin - sy || py > c.ymax + sy) return false;
   const CPoint q{CoordNT(ft(p.x)), CoordNT(ft(p.y))};
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    const DecomposedCell& cell = cells[c];
-    const double sx = 1e-9 * (1 + std::abs(px)), sy = 1e-9 * (1 + std::abs(py));
-    if (px < cell.xmin - sx || px > cell.xmax + sx || py < cell.ymin - sy || py > cell.ymax + sy) continue;
-    for (const auto& piece : exact->cells[c]) {
-      if (px < piece.x0 - sx || px > piece.x1 + sx) continue;
-      const PolygonSet s(piece.pwh);
-      if (s.oriented_side(q) != CGAL::ON_NEGATIVE_SIDE) return static_cast<int>(c);
-    }
+  for (const auto& piece : exact->cells[static_cast<std::size_t>(cell)]) {
+    if (px < piece.x0 - sx || px > piece.x1 + sx) continue;
+    const PolygonSet s(piece.pwh);
+    if (s.oriented_side(q) != CGAL::ON_NEGATIVE_SIDE) return true;
   }
+  return false;
+}
+
+int CellDecomposition::locate(const Point& p) const {
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    if (contains(static_cast<int>(c), p)) return static_cast<int>(c);
   return -1;
+}
+
+std::vector<SampledRegion> sampledCells(const CellDecomposition& d, double tolerance, std::vector<std::size_t>* unplaced) {
+  if (unplaced) unplaced->assign(d.cells.size(), 0);
+  std::vector<CurveRegion> regions;
+  for (const DecomposedCell& c : d.cells) regions.push_back(c.region);
+  std::vector<SampledRegion> out = sampleRegions(regions, tolerance, true);
+  const Rotation& rot = d.rotation;
+  auto inside = [&](int cell, PointD v) { return d.contains(cell, rot.apply(Point{exactFromDouble(v.x), exactFromDouble(v.y)})); };
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    auto fix = [&](std::vector<PointD>& ring) {
+      // the frame's rings back in the workspace's frame, then each vertex into its cell
+      for (PointD& v : ring) v = rot.c == 1 ? v : rot.inverse(v);
+      const std::size_t n = ring.size();
+      std::vector<PointD> moved = ring;
+      for (std::size_t k = 0; k < n; ++k) {
+        PointD v = ring[k];
+        if (inside(static_cast<int>(i), v)) continue;
+        // inward: the left of both edges (outer rings counter-clockwise, holes clockwise: the
+        // region is on the left of either); at a cusp (an arc's x-extreme meeting a wall, where
+        // the two edges run back on each other) toward the neighbours instead
+        const PointD a = ring[(k + n - 1) % n], b = ring[(k + 1) % n];
+        const double ex = v.x - a.x, ey = v.y - a.y, fx = b.x - v.x, fy = b.y - v.y;
+        const double le = std::hypot(ex, ey), lf = std::hypot(fx, fy);
+        std::vector<PointD> dirs{{(le > 0 ? -ey / le : 0) + (lf > 0 ? -fy / lf : 0), (le > 0 ? ex / le : 0) + (lf > 0 ? fx / lf : 0)},
+                                 {(a.x + b.x) / 2 - v.x, (a.y + b.y) / 2 - v.y}, {a.x - v.x, a.y - v.y}, {b.x - v.x, b.y - v.y}};
+        for (const PointD& dir : dirs) {
+          const double ln = std::hypot(dir.x, dir.y);
+          if (ln == 0 || inside(static_cast<int>(i), v)) continue;
+          double step = 4 * std::numeric_limits<double>::epsilon() * (1 + std::max(std::abs(v.x), std::abs(v.y)));
+          for (int t = 0; t < 40 && step < ln / 2; ++t, step *= 2) {
+            const PointD w{ring[k].x + dir.x / ln * step, ring[k].y + dir.y / ln * step};
+            if (inside(static_cast<int>(i), w)) {
+              v = w;
+              break;
+            }
+          }
+        }
+        if (unplaced && !inside(static_cast<int>(i), v)) ++(*unplaced)[i];
+        moved[k] = v;
+      }
+      ring = std::move(moved);
+    };
+    fix(out[i].outer);
+    for (auto& h : out[i].holes) fix(h);
+  }
+  return out;
 }
 
 DecompositionCheck checkDecomposition(const CellDecomposition& d, const CSpace& space) {

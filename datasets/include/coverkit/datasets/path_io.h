@@ -76,6 +76,10 @@ struct CellsDocument {
     PointD from, to;
   };
   std::vector<Wall> walls;
+  /// The cells as checked line polygons (geometry/decomposition.h, sampledCells), for GeoJSON; when
+  /// empty, the cells' arcs are replaced on their inside, unchecked.
+  std::vector<SampledRegion> sampled;
+  std::vector<std::size_t> unplaced;   ///< per cell: vertices of `sampled` that could not be put inside it
 };
 std::string cellsFileContent(const std::string& file, const CellsDocument& doc);
 

@@ -110,6 +110,8 @@ struct CellDecomposition {
   bool interval(int cell, double x, double& lo, double& hi) const;
   /// The cell whose closure holds p (frame coordinates, exact), or −1.
   int locate(const Point& p) const;
+  /// Whether the closure of `cell` holds p (exact).
+  bool contains(int cell, const Point& p) const;
   /// The top (or bottom) boundary of a sweep cell over [x0, x1], sorted by x; vertical pieces left out.
   std::vector<SidePiece> side(int cell, bool top, double x0, double x1) const;
 };
@@ -118,6 +120,15 @@ struct CellDecomposition {
 /// `gridSize`: the mega-cell size for kGrid (boxes from `gridOrigin`), ignored otherwise.
 CellDecomposition decomposeCSpace(const CSpace& space, DecompositionRule rule, const std::string& method,
                                   const Rational& gridSize = 0, const Point& gridOrigin = {});
+
+/// The cells as polygons of line segments in the workspace's frame, for line-only files (GeoJSON):
+/// arcs replaced by lines within `tolerance` on the cell's inside (geometry/sampling.h), then every
+/// vertex checked exactly to lie in its cell (turned into the decomposition's frame exactly) and
+/// moved inward (along its corner's bisector, or toward its neighbours at a cusp), a few ulps at a
+/// time doubling, until it does. One ring set per cell, in order. `unplaced`, when given, gets per
+/// cell the vertices no such move brought into the cell (a sliver thinner than the doubles near it,
+/// seen on rotated trapezoidal cells): those are left where rounding put them.
+std::vector<SampledRegion> sampledCells(const CellDecomposition& d, double tolerance, std::vector<std::size_t>* unplaced = nullptr);
 
 /// C-free cut by the vertical lines x = xs[i] and the horizontal lines y = ys[j] (rational, any
 /// order; lines outside a component are ignored): each connected piece of C-free between them is a
