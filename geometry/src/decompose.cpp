@@ -272,9 +272,11 @@ void matchLine(std::vector<LineEdge>& A, std::vector<LineEdge>& B, int line, boo
     const bool aFirst = CGAL::compare(A[i].hi, B[j].hi) != CGAL::LARGER;
     const CoordNT& hi = aFirst ? A[i].hi : B[j].hi;
     if (CGAL::compare(lo, hi) == CGAL::SMALLER) {
-      // one contact per pair and line: extend the last one when the same pair meets again
+      // one contact per stretch: extend the last one when the same pair meets again right where it
+      // ended (an edge split at a vertex); a pair meeting along two stretches apart (an obstacle
+      // touches the line between them) has two contacts, and a wall
       if (!out.empty() && out.back().a == A[i].piece && out.back().b == B[j].piece && out.back().line == line &&
-          out.back().vertical == vertical)
+          out.back().vertical == vertical && CGAL::compare(out.back().hi, lo) != CGAL::SMALLER)
         out.back().hi = hi;
       else
         out.push_back({A[i].piece, B[j].piece, line, vertical, lo, hi});

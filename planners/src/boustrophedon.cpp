@@ -79,8 +79,31 @@ public:
   double tau(double lo, double hi) const { return std::min(r_ / 100, (hi - lo) / 4); }
 
   /// A path from u to v inside `cell` (both in it): the chord, or split at the middle of the
-  /// cell's interval halfway in x, recursively.
-  bool connect(int cell, PointD u, PointD v, std::vector<PathSegment>& out, int depth = 0) const {
+  /// cell's interval halfway in x, recursively; where that fails (an interval that jumps at a
+  /// vertical piece of the boundary, so that every split point is on the wrong side of a corner),
+  /// through gates at the x of the boundary's vertices instead.
+  bool connect(int cell, PointD u, PointD v, std::vector<PathSegment>& out) const {
+    const std::size_t mark = out.size();
+    if (connectSplit(cell, u, v, out)) return true;
+    out.resize(mark);
+    if (connectGates(cell, u, v, out)) return true;
+    out.resize(mark);
+    // two points on (nearly) one vertical line, along which an obstacle's side runs (two doors of
+    // one wall line): through a point a little inside the cell beside them
+    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const double ym = (u.y + v.y) / 2;
+    for (double step = r_ / 100; step < c.xmax - c.xmin; step *= 2)
+      for (double side : {-1.0, 1.0}) {
+        const PointD p{(u.x + v.x) / 2 + side * step, ym};
+        double lo, hi;
+        if (p.x < c.xmin || p.x > c.xmax || !cells_.interval(cell, p.x, lo, hi) || p.y <= lo || p.y >= hi) continue;
+        if (connectSplit(cell, u, p, out) && connectSplit(cell, p, v, out)) return true;
+        out.resize(mark);
+      }
+    return false;
+  }
+
+  bool connectSplit(int cell, PointD u, PointD v, std::vector<PathSegment>& out, int depth = 0) const {
     if (line(u, v, out)) return true;
     if (depth > 18) return false;
     // split halfway in x; two points on one vertical line (two doors on one wall line, where an
@@ -92,7 +115,36 @@ public:
     if (!cells_.interval(cell, xm, lo, hi)) return false;
     const PointD m{xm, (lo + hi) / 2};
     if ((m.x == u.x && m.y == u.y) || (m.x == v.x && m.y == v.y)) return false;
-    return connect(cell, u, m, out, depth + 1) && connect(cell, m, v, out, depth + 1);
+    return connectSplit(cell, u, m, out, depth + 1) && connectSplit(cell, m, v, out, depth + 1);
+  }
+
+  /// Through the gates of a monotone cell: at every x where its boundary has a vertex between u and
+  /// v, a point of the interval that both sides of that x share (clamped from the straight line u → v),
+  /// the pieces between consecutive gates by connectSplit (the boundary is one curve on each side there).
+  bool connectGates(int cell, PointD u, PointD v, std::vector<PathSegment>& out) const {
+    std::vector<double> xs;
+    for (bool top : {true, false})
+      for (const SidePiece& p : cells_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x)))
+        for (double x : {p.x0, p.x1})
+          if (x > std::min(u.x, v.x) && x < std::max(u.x, v.x)) xs.push_back(x);
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    if (v.x < u.x) std::reverse(xs.begin(), xs.end());
+    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const double eps = 1e-7 * (c.xmax - c.xmin);
+    PointD at = u;
+    for (double x : xs) {
+      double l1, h1, l2, h2;
+      if (!cells_.interval(cell, x - eps, l1, h1) || !cells_.interval(cell, x + eps, l2, h2)) continue;
+      const double glo = std::max(l1, l2), ghi = std::min(h1, h2);
+      if (glo > ghi) return false;
+      const double m = std::min(r_ / 100, (ghi - glo) / 4);
+      const double t = (x - u.x) / (v.x - u.x);
+      const PointD gate{x, std::clamp(u.y + t * (v.y - u.y), glo + m, ghi - m)};
+      if (!connectSplit(cell, at, gate, out)) return false;
+      at = gate;
+    }
+    return connectSplit(cell, at, v, out);
   }
 
   /// The point τ inside a side piece at x, along the piece's normal (a parallel line, or a circle

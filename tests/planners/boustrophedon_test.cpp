@@ -5,6 +5,7 @@
 #include "helpers/worlds.h"
 
 #include <coverkit/datasets/generators.h>
+#include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
@@ -89,6 +90,23 @@ TEST(Boustrophedon, ReportsWhatLiesBehindAGapExactly2rWide) {
   EXPECT_GT(plan.statistics.at("cells_behind_exact_gaps"), 0);
   EXPECT_GT(plan.statistics.at("area_behind_exact_gaps"), 2);
   for (const PathSegment& s : plan.paths[0].segments) EXPECT_LE(std::max(s.from.x, s.to.x), 5.0);   // stays on its side
+}
+
+// Transitions between cells whose shared walls lie on one vertical line with an obstacle's side
+// between them, and cells whose interval jumps at a vertical piece of boundary (a corridor with a
+// column at its end): every cell is reached (found on the shipped maze at r = 0.4 and on a Moving AI
+// maze, where 5 and 14 cells were left).
+TEST(Boustrophedon, ReachesEveryCellOfAMaze) {
+  const Workspace maze = datasets::loadMap(std::string(COVERKIT_DATA_DIR) + "/maze.map");
+  for (const Rational& r : {Rational(2, 5), Rational(31, 100), Rational(1, 4)}) {
+    SCOPED_TRACE("r " + r.get_str());
+    const auto ctx = testing_helpers::contextFor(maze, r);
+    const Plan plan = planners::runPlanner("boustrophedon", ctx, {});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+    EXPECT_EQ(plan.statistics.at("cells_unreached"), 0);
+    EXPECT_EQ(plan.statistics.at("sweeps_broken"), 0);
+    EXPECT_TRUE(testing_helpers::coversCFreeComponent(ctx, plan, 0.97));
+  }
 }
 
 TEST(Boustrophedon, RefusesBadParameters) {

@@ -32,7 +32,11 @@
 //    the corner (left/right, up/down) nearest the robot.
 //  - Transitions between cells follow a shortest path of the cell graph, through the middle of the
 //    longest wall shared by consecutive cells; inside a cell, a straight segment, split at the
-//    middle of the cell's interval until every piece is clear (a monotone cell holds such a path).
+//    middle of the cell's interval until every piece is clear; where that fails, through gates at
+//    the x of the boundary's vertices (the interval of a monotone cell jumps at a vertical piece of
+//    boundary, and a split point on the far side of that corner never clears it), or through a
+//    point beside two doors on one wall line (an obstacle's side between them), or back along the
+//    path's last lines.
 //  - Safety: the plan is made in the C-free of radius r + μ (μ = 2^-24·r, at least 2^-40 of the
 //    extent): every piece is checked exactly there (CSpace::segmentClear), so rounding the frame's
 //    points back from a rotated frame (an error near 1e-16 of the extent) cannot bring the disc
