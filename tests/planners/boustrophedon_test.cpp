@@ -111,8 +111,9 @@ TEST(Boustrophedon, ReachesEveryCellOfAMaze) {
 
 TEST(Boustrophedon, RefusesBadParameters) {
   const auto ctx = testing_helpers::contextFor(testing_helpers::boxWith({}), Rational(1, 2));
-  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
+  for (const auto& kv : std::vector<std::pair<std::string, std::string>>{
            {"direction", "north"}, {"direction", "1e9"}, {"decomposition", "grid"}, {"decomposition", "voronoi"}}) {
+    const std::string &k = kv.first, &v = kv.second;   // not a structured binding: clang 14 cannot capture one
     const std::string message = testing_helpers::inputErrorMessage([&] { planners::runPlanner("boustrophedon", ctx, {{k, v}}); });
     EXPECT_NE(message.find(k + "=" + v), std::string::npos) << message;
   }
