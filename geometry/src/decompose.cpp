@@ -28,10 +28,28 @@ using Curve = Traits::X_monotone_curve_2;
 using CPoint = Traits::Point_2;
 using CoordNT = Traits::CoordNT;
 
+/// A boundary curve of a piece in doubles (nearest doubles of the exact values), made once when the
+/// piece is made: the planners' queries (interval, side) read these, not the lazy exact numbers.
+struct CurveD {
+  SidePiece sp;               ///< x-range, line or circle, half, orientation
+  double r2 = 0;              ///< the circle's squared radius as stored (y is computed from it)
+  bool vertical = false;
+  double ya = 0, yb = 0;      ///< a vertical segment's ends
+  bool outer = false;         ///< on the piece's outer boundary
+  bool directedRight = false;
+  /// y at x, for a non-vertical curve
+  double yAt(double x) const {
+    if (!sp.arc) return sp.b == 0 ? ya : -(sp.a * x + sp.c) / sp.b;
+    const double h = std::sqrt(std::max(0.0, r2 - (x - sp.center.x) * (x - sp.center.x)));
+    return sp.upperHalf ? sp.center.y + h : sp.center.y - h;
+  }
+};
+
 struct detail::ExactCells {
   struct Piece {
     CPolygonWithHoles pwh;
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    std::vector<CurveD> curves;   ///< every boundary curve of pwh, outer boundary first
   };
   std::vector<std::vector<Piece>> cells;            ///< the slab (or box) pieces of each cell
   std::vector<std::vector<CPolygonWithHoles>> joined;  ///< each cell as united regions (one for a connected cell)
@@ -77,56 +95,71 @@ double dbl(const CoordNT& v) {
 
 bool isHorizontal(const Curve& cv) { return cv.is_linear() && !cv.is_vertical() && CGAL::compare(cv.source().y(), cv.target().y()) == CGAL::EQUAL; }
 
-/// y of an x-monotone curve at x (doubles). A circular x-monotone arc is a lower arc when it runs
-/// counter-clockwise from left to right (or clockwise from right to left).
-double yAt(const Curve& cv, double x) {
-  if (cv.is_linear()) {
-    const auto l = cv.supporting_line();
-    const double a = num(l.a()), b = num(l.b()), c = num(l.c());
-    if (b == 0) return dbl(cv.source().y());
-    return -(a * x + c) / b;
-  }
-  const auto circ = cv.supporting_circle();
-  const double cx = num(circ.center().x()), cy = num(circ.center().y());
-  const double r2 = num(circ.squared_radius());
-  const double h = std::sqrt(std::max(0.0, r2 - (x - cx) * (x - cx)));
-  const bool lower = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == cv.is_directed_right();
-  return lower ? cy - h : cy + h;
-}
-
-/// y-range of an x-monotone curve (doubles), its top or bottom point included.
-void yRange(const Curve& cv, double& lo, double& hi) {
-  lo = std::min(dbl(cv.source().y()), dbl(cv.target().y()));
-  hi = std::max(dbl(cv.source().y()), dbl(cv.target().y()));
-  if (!cv.is_circular()) return;
-  const auto circ = cv.supporting_circle();
-  const double cx = num(circ.center().x());
-  if (dbl(cv.left().x()) <= cx && cx <= dbl(cv.right().x())) {
-    const double y = yAt(cv, cx);
-    lo = std::min(lo, y);
-    hi = std::max(hi, y);
-  }
-}
-
 template <class F>
 void forEachLoop(const CPolygonWithHoles& p, F&& f) {
   f(p.outer_boundary());
   for (auto h = p.holes_begin(); h != p.holes_end(); ++h) f(*h);
 }
 
-void bboxOf(const CPolygonWithHoles& p, double& x0, double& x1, double& y0, double& y1) {
+/// A curve in doubles. A circular x-monotone arc is a lower arc when it runs counter-clockwise from
+/// left to right (or clockwise from right to left).
+CurveD describe(const Curve& cv, bool outer) {
+  CurveD d;
+  d.outer = outer;
+  d.directedRight = cv.is_directed_right();
+  d.vertical = cv.is_vertical();
+  d.sp.x0 = dbl(cv.left().x());
+  d.sp.x1 = dbl(cv.right().x());
+  d.ya = dbl(cv.source().y());
+  d.yb = dbl(cv.target().y());
+  if (cv.is_linear()) {
+    const auto l = cv.supporting_line();
+    d.sp.a = num(l.a());
+    d.sp.b = num(l.b());
+    d.sp.c = num(l.c());
+  } else {
+    const auto circ = cv.supporting_circle();
+    d.sp.arc = true;
+    d.sp.center = {num(circ.center().x()), num(circ.center().y())};
+    d.r2 = num(circ.squared_radius());
+    d.sp.rho = std::sqrt(d.r2);
+    d.sp.clockwise = cv.orientation() == CGAL::CLOCKWISE;
+    d.sp.upperHalf = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
+  }
+  return d;
+}
+
+std::vector<CurveD> describeAll(const CPolygonWithHoles& p) {
+  std::vector<CurveD> out;
+  bool outer = true;
+  forEachLoop(p, [&](const CPolygon& loop) {
+    for (auto it = loop.curves_begin(); it != loop.curves_end(); ++it) out.push_back(describe(*it, outer));
+    outer = false;
+  });
+  return out;
+}
+
+/// y-range of a curve, its top or bottom point included.
+void yRange(const CurveD& d, double& lo, double& hi) {
+  lo = std::min(d.ya, d.yb);
+  hi = std::max(d.ya, d.yb);
+  if (!d.sp.arc || d.sp.center.x < d.sp.x0 || d.sp.center.x > d.sp.x1) return;
+  const double y = d.yAt(d.sp.center.x);
+  lo = std::min(lo, y);
+  hi = std::max(hi, y);
+}
+
+void bboxOf(const std::vector<CurveD>& curves, double& x0, double& x1, double& y0, double& y1) {
   x0 = y0 = HUGE_VAL;
   x1 = y1 = -HUGE_VAL;
-  forEachLoop(p, [&](const CPolygon& loop) {
-    for (auto it = loop.curves_begin(); it != loop.curves_end(); ++it) {
-      double lo, hi;
-      yRange(*it, lo, hi);
-      x0 = std::min(x0, dbl(it->left().x()));
-      x1 = std::max(x1, dbl(it->right().x()));
-      y0 = std::min(y0, lo);
-      y1 = std::max(y1, hi);
-    }
-  });
+  for (const CurveD& d : curves) {
+    double lo, hi;
+    yRange(d, lo, hi);
+    x0 = std::min(x0, d.sp.x0);
+    x1 = std::max(x1, d.sp.x1);
+    y0 = std::min(y0, lo);
+    y1 = std::max(y1, hi);
+  }
 }
 
 CPolygon boxPolygon(const K::FT& x0, const K::FT& y0, const K::FT& x1, const K::FT& y1) {
@@ -206,6 +239,7 @@ struct LeafPiece {
   CPolygonWithHoles pwh;
   int col = 0, row = 0;
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  std::vector<CurveD> curves;
 };
 
 /// C-free ∩ each box of the line grid X × Y, by recursive halving (decomposition.h).
@@ -219,8 +253,12 @@ struct Cutter {
     if (S.is_empty()) return;
     if (c0 == c1 && r0 == r1) {
       for (auto& p : faceRegions(S)) {
-        LeafPiece lp{std::move(p), c0, r0};
-        bboxOf(lp.pwh, lp.x0, lp.x1, lp.y0, lp.y1);
+        LeafPiece lp;
+        lp.pwh = std::move(p);
+        lp.col = c0;
+        lp.row = r0;
+        lp.curves = describeAll(lp.pwh);
+        bboxOf(lp.curves, lp.x0, lp.x1, lp.y0, lp.y1);
         out.push_back(std::move(lp));
       }
       return;
@@ -355,7 +393,7 @@ CellDecomposition decomposeImpl(const CSpace& space, DecompositionRule rule, con
   for (std::size_t ci = 0; ci < parts.size(); ++ci) {
     const CPolygonWithHoles& comp = parts[ci];
     double bx0, bx1, by0, by1;
-    bboxOf(comp, bx0, bx1, by0, by1);
+    bboxOf(describeAll(comp), bx0, bx1, by0, by1);
     const std::vector<Vertex> verts = verticesOf(comp);
     // exact extent: the leftmost / rightmost vertex (curves are x-monotone)
     CoordNT xmin = verts.front().p.x(), xmax = xmin, ymin = verts.front().p.y(), ymax = ymin;
@@ -381,12 +419,12 @@ CellDecomposition decomposeImpl(const CSpace& space, DecompositionRule rule, con
       Rational k0 = (lo - gridOrigin.x) / gridSize;
       mpz_class k = k0.get_num() / k0.get_den();
       for (Rational x = gridOrigin.x + Rational(k) * gridSize; x <= hi; x += gridSize)
-        if (CGAL::compare(CoordNT(ft(x)), xmin) == CGAL::LARGER && CGAL::compare(CoordNT(ft(x)), xmax) == CGAL::SMALLER) xs.push_back(x);
+        if (inside(x, xmin, xmax)) xs.push_back(x);
       const Rational ylo = Rational(std::floor(by0)) - 1, yhi = Rational(std::ceil(by1)) + 1;
       Rational m0 = (ylo - gridOrigin.y) / gridSize;
       mpz_class m = m0.get_num() / m0.get_den();
       for (Rational y = gridOrigin.y + Rational(m) * gridSize; y <= yhi; y += gridSize)
-        if (CGAL::compare(CoordNT(ft(y)), ymin) == CGAL::LARGER && CGAL::compare(CoordNT(ft(y)), ymax) == CGAL::SMALLER) ys.push_back(y);
+        if (inside(y, ymin, ymax)) ys.push_back(y);
     } else {
       for (const Vertex& v : verts) {
         if (!v.real) continue;
@@ -397,8 +435,7 @@ CellDecomposition decomposeImpl(const CSpace& space, DecompositionRule rule, con
         }
         vertexY[*x].push_back(v.p.y());
         if (rule == DecompositionRule::kBoustrophedon && !v.extreme) continue;
-        if (CGAL::compare(CoordNT(ft(*x)), xmin) == CGAL::LARGER && CGAL::compare(CoordNT(ft(*x)), xmax) == CGAL::SMALLER)
-          xs.push_back(*x);
+        if (inside(*x, xmin, xmax)) xs.push_back(*x);
       }
     }
     std::sort(xs.begin(), xs.end());
@@ -513,7 +550,7 @@ CellDecomposition decomposeImpl(const CSpace& space, DecompositionRule rule, con
     for (int i : p.pieces) {
       cellOfPiece[static_cast<std::size_t>(i)] = static_cast<int>(c);
       const LeafPiece& lp = pieces[static_cast<std::size_t>(i)];
-      exactPieces.push_back({lp.pwh, lp.x0, lp.x1, lp.y0, lp.y1});
+      exactPieces.push_back({lp.pwh, lp.x0, lp.x1, lp.y0, lp.y1, lp.curves});
       polys.push_back(lp.pwh);
     }
     std::vector<CPolygonWithHoles> joined;
@@ -568,21 +605,17 @@ bool CellDecomposition::interval(int cell, double x, double& lo, double& hi) con
   hi = -HUGE_VAL;
   for (const auto& piece : exact->cells.at(static_cast<std::size_t>(cell))) {
     if (x < piece.x0 || x > piece.x1) continue;
-    forEachLoop(piece.pwh, [&](const CPolygon& loop) {
-      for (auto it = loop.curves_begin(); it != loop.curves_end(); ++it) {
-        const Curve& cv = *it;
-        const double l = dbl(cv.left().x()), r = dbl(cv.right().x());
-        if (x < l || x > r) continue;
-        if (cv.is_vertical()) {
-          lo = std::min({lo, dbl(cv.source().y()), dbl(cv.target().y())});
-          hi = std::max({hi, dbl(cv.source().y()), dbl(cv.target().y())});
-        } else {
-          const double y = yAt(cv, x);
-          lo = std::min(lo, y);
-          hi = std::max(hi, y);
-        }
+    for (const CurveD& d : piece.curves) {
+      if (x < d.sp.x0 || x > d.sp.x1) continue;
+      if (d.vertical) {
+        lo = std::min({lo, d.ya, d.yb});
+        hi = std::max({hi, d.ya, d.yb});
+      } else {
+        const double y = d.yAt(x);
+        lo = std::min(lo, y);
+        hi = std::max(hi, y);
       }
-    });
+    }
   }
   return lo <= hi;
 }
@@ -598,29 +631,9 @@ std::vector<SidePiece> CellDecomposition::side(int cell, bool top, double x0, do
   if (x0 > x1) std::swap(x0, x1);
   for (const auto& piece : exact->cells.at(static_cast<std::size_t>(cell))) {
     if (piece.x1 < x0 || piece.x0 > x1) continue;
-    const CPolygon& loop = piece.pwh.outer_boundary();   // counter-clockwise: the top runs right to left
-    for (auto it = loop.curves_begin(); it != loop.curves_end(); ++it) {
-      const Curve& cv = *it;
-      if (cv.is_vertical() || cv.is_directed_right() == top) continue;
-      SidePiece sp;
-      sp.x0 = dbl(cv.left().x());
-      sp.x1 = dbl(cv.right().x());
-      if (sp.x1 < x0 || sp.x0 > x1) continue;
-      if (cv.is_linear()) {
-        const auto l = cv.supporting_line();
-        sp.a = num(l.a());
-        sp.b = num(l.b());
-        sp.c = num(l.c());
-      } else {
-        const auto circ = cv.supporting_circle();
-        sp.arc = true;
-        sp.center = {num(circ.center().x()), num(circ.center().y())};
-        sp.rho = std::sqrt(num(circ.squared_radius()));
-        sp.clockwise = cv.orientation() == CGAL::CLOCKWISE;
-        sp.upperHalf = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
-      }
-      out.push_back(sp);
-    }
+    // the outer boundary runs counter-clockwise: the top from right to left
+    for (const CurveD& d : piece.curves)
+      if (d.outer && !d.vertical && d.directedRight != top && d.sp.x1 >= x0 && d.sp.x0 <= x1) out.push_back(d.sp);
   }
   std::sort(out.begin(), out.end(), [](const SidePiece& u, const SidePiece& v) { return u.x0 < v.x0; });
   return out;

@@ -53,7 +53,15 @@ struct FramePlan {
 
 class Walker {
 public:
-  Walker(const Decomposed& d, double r) : cells_(d.cells), space_(*d.space), r_(r) {}
+  Walker(const Decomposed& d, double r) : cells_(d.cells), space_(*d.space), r_(r), wallsOf_(d.cells.cells.size()) {
+    // per pair of cells its longest wall (the first of equal ones), per cell its walls
+    for (const CellWall& w : cells_.walls) {
+      const CellWall*& best = longest_[{w.a, w.b}];
+      if (!best || w.length() > best->length()) best = &w;
+      wallsOf_[static_cast<std::size_t>(w.a)].push_back(&w);
+      wallsOf_[static_cast<std::size_t>(w.b)].push_back(&w);
+    }
+  }
 
   /// Appends the line u → v when it is clear in the frame's C-free (radius r + μ), exactly.
   bool line(PointD u, PointD v, std::vector<PathSegment>& out) const {
@@ -234,9 +242,7 @@ public:
 
   /// The middle of the longest wall between a and b.
   PointD door(int a, int b) const {
-    const CellWall* best = nullptr;
-    for (const CellWall& w : cells_.walls)
-      if (w.a == std::min(a, b) && w.b == std::max(a, b) && (!best || w.length() > best->length())) best = &w;
+    const CellWall* best = longest_.at({std::min(a, b), std::max(a, b)});
     const double mid = (best->lo + best->hi) / 2;
     return best->vertical ? PointD{best->at, mid} : PointD{mid, best->at};
   }
@@ -249,8 +255,8 @@ private:
     double lo, hi;
     if (!cells_.interval(cell, x, lo, hi) || hi <= lo) return false;
     double walls = 0;
-    for (const CellWall& w : cells_.walls)
-      if (w.vertical && (w.a == cell || w.b == cell) && std::abs(w.at - x) <= 1e-9 * (1 + std::abs(x))) walls += w.length();
+    for (const CellWall* w : wallsOf_[static_cast<std::size_t>(cell)])
+      if (w->vertical && std::abs(w->at - x) <= 1e-9 * (1 + std::abs(x))) walls += w->length();
     return walls >= 0.999 * (hi - lo);
   }
 
@@ -296,6 +302,8 @@ private:
   const CellDecomposition& cells_;
   const CSpace& space_;
   double r_;
+  std::map<std::pair<int, int>, const CellWall*> longest_;
+  std::vector<std::vector<const CellWall*>> wallsOf_;
   mutable std::size_t checks_ = 0;
 };
 
@@ -334,8 +342,9 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
         const double a = k * M_PI / 8;
         const PointD p{entry.x + step * std::cos(a), entry.y + step * std::sin(a)};
         const PointD back = rot.c == 1 ? p : rot.inverse(p);
-        if (cells.locate(exactOf(p)) < 0 || !segmentClear(problem.workspace, problem.robots[0].radius, start, exactOf(back))) continue;
-        startCell = cells.locate(exactOf(p));
+        const int in = cells.locate(exactOf(p));
+        if (in < 0 || !segmentClear(problem.workspace, problem.robots[0].radius, start, exactOf(back))) continue;
+        startCell = in;
         entry = p;
         stepped = true;
       }
