@@ -52,12 +52,34 @@ CPolygon curved(const Ring& ring, bool ccw) {
 /// offset whole (convolution); large ones are triangulated first and every triangle is offset on
 /// its own, so that the caller's single range join unites them: the convolution of a large
 /// non-convex polygon grows quadratically (docs/performance.md: a 10,000-vertex star).
+/// Every loop of the polygon closes (each curve ends where the next begins). CGAL's
+/// approximated_offset_2 returns a loop that does not close for some small convex polygons (a
+/// 24-gon disc of radius 0.26 at r = 0.2, at every eps tried); the Boolean operations then drop the
+/// obstacle silently under NDEBUG, and plans crossed it (the validator caught them).
+bool closedLoops(const CPolygonWithHoles& p) {
+  auto closed = [](const CPolygon& g) {
+    auto it = g.curves_begin();
+    if (it == g.curves_end()) return false;
+    auto prev = it;
+    for (++it; it != g.curves_end(); prev = it, ++it)
+      if (!(prev->target() == it->source())) return false;
+    return g.curves_begin()->source() == prev->target();
+  };
+  if (!closed(p.outer_boundary())) return false;
+  for (auto h = p.holes_begin(); h != p.holes_end(); ++h)
+    if (!closed(*h)) return false;
+  return true;
+}
+
 template <class Polygon>
 void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double eps, std::vector<CPolygonWithHoles>& out) {
   constexpr std::size_t kWhole = 2000;
   if (vertices <= kWhole) {
-    out.push_back(CGAL::approximated_offset_2(p, r, eps));
-    return;
+    CPolygonWithHoles whole = CGAL::approximated_offset_2(p, r, eps);
+    if (closedLoops(whole)) {
+      out.push_back(std::move(whole));
+      return;
+    }
   }
   std::vector<LinearPolygon> triangles;
   CGAL::Polygon_triangulation_decomposition_2<K> decompose;

@@ -301,3 +301,21 @@ TEST(CSpace, RadiusZeroGivesTheObstaclesBack) {
   EXPECT_FALSE(cs.contains({Rational(5), Rational(5)}));
   EXPECT_TRUE(cs.contains({Rational(4), Rational(4)}));  // on an obstacle's boundary: closed C-free
 }
+
+// CGAL's approximated_offset_2 returns a boundary that does not close for this 24-gon (a disc of
+// radius about 0.26 from the generator) at r = 0.2; the obstacle then vanished from C-free and
+// plans crossed it. Such an offset is now replaced by the offsets of the polygon's triangles.
+TEST(CSpace, AnOffsetThatDoesNotCloseIsReplaced) {
+  const double v[][2] = {{11.55, 3.02}, {11.53, 2.95}, {11.49, 2.9},  {11.44, 2.85}, {11.38, 2.82}, {11.31, 2.81},
+                         {11.24, 2.82}, {11.18, 2.84}, {11.12, 2.88}, {11.08, 2.93}, {11.05, 2.99}, {11.04, 3.06},
+                         {11.04, 3.13}, {11.06, 3.19}, {11.1, 3.25},  {11.15, 3.29}, {11.22, 3.32}, {11.28, 3.33},
+                         {11.35, 3.33}, {11.42, 3.3},  {11.47, 3.27}, {11.52, 3.21}, {11.54, 3.15}, {11.56, 3.09}};
+  Ring disc;
+  for (const auto& q : v) disc.push_back({parseRational(formatDouble(q[0])), parseRational(formatDouble(q[1]))});
+  const Workspace w = testing_helpers::boxWith({disc}, 25, 15);
+  const CSpace cs(w, Rational(1, 5));
+  EXPECT_FALSE(cs.contains({parseRational("11.2624"), parseRational("2.85")}));   // inside the obstacle
+  EXPECT_FALSE(cs.contains({parseRational("11.3"), parseRational("2.65")}));      // 0.16 below it
+  EXPECT_TRUE(cs.contains({parseRational("11.3"), parseRational("2.5")}));        // 0.31 below it
+  EXPECT_LT(cs.area(), 24.6 * 14.6 - 0.5);                                        // the eroded box minus the obstacle
+}
