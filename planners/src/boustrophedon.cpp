@@ -39,6 +39,29 @@ double turning(const Path& path) {
   return t;
 }
 
+/// Heading changes above 1° (geometry/metrics.h) at the joints of segs[from, to) and where
+/// segs[from] meets the segment before it.
+double turnsIn(const std::vector<PathSegment>& segs, std::size_t from, std::size_t to) {
+  auto headings = [](const PathSegment& s) {
+    if (s.kind == PathSegment::Kind::kLine) {
+      const double h = std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
+      return std::pair{h, h};
+    }
+    const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x), a1 = std::atan2(s.to.y - s.center.y, s.to.x - s.center.x);
+    const double q = s.ccw ? M_PI / 2 : -M_PI / 2;
+    return std::pair{a0 + q, a1 + q};
+  };
+  double n = 0;
+  const PathSegment* prev = nullptr;
+  for (std::size_t i = from > 0 ? from - 1 : 0; i < to; ++i) {
+    const PathSegment& s = segs[i];
+    if (s.kind == PathSegment::Kind::kLine && s.from.x == s.to.x && s.from.y == s.to.y) continue;
+    if (prev && std::abs(std::remainder(headings(s).first - headings(*prev).second, 2 * M_PI)) > M_PI / 180) ++n;
+    prev = &s;
+  }
+  return n;
+}
+
 /// One direction's plan, in the decomposition's frame.
 struct FramePlan {
   bool ok = false;
@@ -395,6 +418,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   int here = startCell;
   std::size_t skipped = 0, lanesTotal = 0, unreached = 0, broken = 0;
   bool timedOut = false;
+  std::map<std::string, double> phaseTurns;
   for (int cell : order) {
     if (stop.expired()) {
       timedOut = true;
@@ -437,6 +461,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       return walk.connect(cell, at, first, route);
     };
     std::vector<PathSegment> route;
+    const std::size_t mark0 = segs.size();
     bool reached = routeFrom(cur(), route);
     // a sweep may end where no split of the chord reaches the door (a corner of a ragged cell):
     // back along the path's last line segments (valid, so valid reversed) and try from there
@@ -458,11 +483,15 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       continue;
     }
     segs.insert(segs.end(), route.begin(), route.end());
+    phaseTurns["turns_transitions"] += turnsIn(segs, mark0, segs.size());
+    std::size_t mark = segs.size();
     // the sweep (boustrophedon.h): along the first side to the far end, the lanes back in a
     // serpentine (an odd number of lanes ends on the other side), along the other side again
     bool ok = true;
     const std::size_t m = lanes.size();
     for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, bottomFirst), !bottomFirst, segs);
+    phaseTurns["turns_first_side"] += turnsIn(segs, mark, segs.size());
+    mark = segs.size();
     bool atBottom = bottomFirst;
     for (std::size_t j = m; ok && j-- > 0;) {
       ok = walk.line(cur(), end(j, !atBottom), segs);
@@ -470,7 +499,10 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       ++lanesTotal;
       if (ok && j > 0) ok = walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
     }
+    phaseTurns["turns_lanes"] += turnsIn(segs, mark, segs.size());
+    mark = segs.size();
     for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
+    phaseTurns["turns_last_side"] += turnsIn(segs, mark, segs.size());
     if (!ok) ++broken;
     if (!ok) ++skipped;   // what was swept before the break stays; the cell counts as not done
     here = cell;
@@ -491,6 +523,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   }
   fp.path = std::move(path);
   fp.stats["lanes"] = static_cast<double>(lanesTotal);
+  for (const auto& [k, v] : phaseTurns) fp.stats[k] = v;
   fp.stats["skipped_cells"] = static_cast<double>(skipped);
   fp.stats["cells_unreached"] = static_cast<double>(unreached);
   fp.stats["sweeps_broken"] = static_cast<double>(broken);
