@@ -7,6 +7,7 @@
 #include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/geometry/metrics.h>
 #include <coverkit/planners/registry.h>
 
 #include <gtest/gtest.h>
@@ -61,6 +62,19 @@ TEST(Boustrophedon, FollowsArcsAndIsDeterministic) {
                                   [](const PathSegment& s) { return s.kind == PathSegment::Kind::kArc; });
   EXPECT_GT(arcs, 0);   // the sweep runs along the C-obstacles' arcs
   EXPECT_EQ(testing_helpers::pathJsonOf(a), testing_helpers::pathJsonOf(planners::runPlanner("boustrophedon", ctx, {})));
+}
+
+TEST(Boustrophedon, ItsTurnsPerPhaseAddUpToTheTurnsOfThePath) {
+  for (const int deg : {0, 30}) {
+    const auto ctx = testing_helpers::contextFor(seeded(3, 8, datasets::ObstacleShape::kMixed), Rational(1, 4));
+    const Plan plan = planners::runPlanner("boustrophedon", ctx, {{"direction", std::to_string(deg)}});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+    double phases = 0;
+    for (const char* k : {"turns_transitions", "turns_first_side", "turns_lanes", "turns_last_side"}) phases += plan.statistics.at(k);
+    const Metrics m = computeMetrics(ctx.problem, ctx.cells, plan.paths);
+    EXPECT_GT(plan.statistics.at("turns_lanes"), 0);
+    EXPECT_NEAR(phases, static_cast<double>(m.turns), 0.01 * static_cast<double>(m.turns)) << deg;
+  }
 }
 
 TEST(Boustrophedon, SweepsInTheDirectionAskedAndBestIsNoWorse) {
