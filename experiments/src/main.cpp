@@ -98,19 +98,6 @@ Problem makeProblem(const std::string& map, const std::string& radius, const std
 }
 
 
-datasets::PathDocument makeDocument(const planners::PlanningContext& ctx, const experiments::RunResult& r) {
-  datasets::PathDocument d;
-  d.planner = r.plan.planner;
-  d.status = toString(r.plan.status);
-  d.robotRadius = ctx.problem.robots.at(0).radius;
-  d.cellSize = ctx.cells.subSize();
-  d.paths = r.plan.paths;
-  d.workspace = &ctx.problem.workspace;  // CSV/GeoJSON: arcs sampled on their exactly checked safe side
-  if (succeeded(r.plan.status)) d.metrics = datasets::metricFields(r.metrics);
-  for (auto& [k, v] : r.plan.statistics) d.statistics.emplace_back(k, v);
-  return d;
-}
-
 nlohmann::json evaluationJson(const ValidationReport& v, const Metrics& m) {
   nlohmann::json j;
   j["valid"] = v.valid;
@@ -394,29 +381,11 @@ int main(int argc, char** argv) {
       const planners::Decomposed dec = planners::runDecomposition(method, problem, kv);
       if (dec.cells.cells.empty())
         throw InputError("--radius", radius, "C-free is empty: a disc of this radius fits nowhere in " + map + " (no cells)");
-      datasets::CellsDocument doc;
-      doc.map = map;
-      doc.method = method;
-      doc.robotRadius = problem.robots[0].radius;
-      doc.params = kv;
-      doc.directionDegrees = -dec.cells.rotation.degrees();
-      doc.rotationCos = dec.cells.rotation.c.get_str();
-      doc.rotationSin = dec.cells.rotation.s.get_str();
-      doc.cfreeArea = dec.space->area();
-      doc.unwalledVertices = dec.cells.unwalledVertices;
-      std::vector<CurveRegion> regions;
-      for (const DecomposedCell& c : dec.cells.cells) {
-        doc.cells.push_back({unrotate(c.region, dec.cells.rotation), c.neighbours});
-        doc.cells.back().region.area = c.area;
-        regions.push_back(doc.cells.back().region);
-      }
-      for (const CellWall& w : dec.cells.walls) {
-        const PointD a = w.vertical ? PointD{w.at, w.lo} : PointD{w.lo, w.at}, b = w.vertical ? PointD{w.at, w.hi} : PointD{w.hi, w.at};
-        doc.walls.push_back({w.a, w.b, dec.cells.rotation.inverse(a), dec.cells.rotation.inverse(b)});
-      }
       std::string outExt = fs::path(out).extension().string();
       for (char& ch : outExt) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-      if (outExt == ".geojson") doc.sampled = sampledCells(dec.cells, datasets::kArcSampleTolerance, &doc.unplaced);
+      const datasets::CellsDocument doc = experiments::cellsDocument(map, method, kv, problem, dec, outExt == ".geojson");
+      std::vector<CurveRegion> regions;
+      for (const auto& c : doc.cells) regions.push_back(c.region);
       progress.step("writing");
       datasets::OutputBatch outputs;
       outputs.add(out, datasets::cellsFileContent(out, doc));
@@ -443,19 +412,7 @@ int main(int argc, char** argv) {
       planners::checkProblem(problem);
       progress.step("C-space");
       const CSpace cs(problem.workspace, problem.robots[0].radius, relEps);
-      datasets::CSpaceDocument doc;
-      doc.map = map;
-      doc.robotRadius = problem.robots[0].radius;
-      doc.epsilon = cs.epsilon();
-      doc.freeArea = freeArea(problem.workspace).get_d();
-      doc.cfreeArea = cs.area();
-      doc.components = cs.components();
-      doc.obstacles = cs.obstacles();
-      doc.cspace = &cs;  // GeoJSON: C-free polygons checked to lie in the exact C-free
-      if (problem.robots[0].start) {
-        doc.start = PointD{problem.robots[0].start->x.get_d(), problem.robots[0].start->y.get_d()};
-        doc.startComponent = cs.componentOf(*problem.robots[0].start);
-      }
+      const datasets::CSpaceDocument doc = experiments::cspaceDocument(map, problem, cs);
       progress.step("writing");
       datasets::OutputBatch outputs;
       outputs.add(out, datasets::cspaceFileContent(out, doc));
@@ -490,7 +447,7 @@ int main(int argc, char** argv) {
           experiments::runOnce(ctx, planner, kv, timeLimit, [&](const std::string& what) { progress.step(what); });
       progress.step("writing");
       datasets::OutputBatch outputs;  // everything made in memory first, then written all or nothing
-      outputs.add(out, datasets::pathFileContent(out, makeDocument(ctx, r)));
+      outputs.add(out, datasets::pathFileContent(out, experiments::pathDocument(ctx, r)));
       if (!picture.empty()) {
         experiments::PictureContent pc{&ctx.problem.workspace, &ctx.cells, &r.plan.treeEdges, &r.plan.paths, ctx.problem.robots[0].radius.get_d(),
                                        planner + " on " + fs::path(map).filename().string()};

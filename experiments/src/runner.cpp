@@ -1,5 +1,6 @@
 #include "runner.h"
 
+#include <coverkit/geometry/decomposition.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
@@ -29,6 +30,60 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
     r.validation.violations.push_back({"status", 0, -1, std::string(toString(r.plan.status)) + ": " + r.plan.message});
   }
   return r;
+}
+
+datasets::PathDocument pathDocument(const planners::PlanningContext& ctx, const RunResult& r) {
+  datasets::PathDocument d;
+  d.planner = r.plan.planner;
+  d.status = toString(r.plan.status);
+  d.robotRadius = ctx.problem.robots.at(0).radius;
+  d.cellSize = ctx.cells.subSize();
+  d.paths = r.plan.paths;
+  d.workspace = &ctx.problem.workspace;  // CSV/GeoJSON: arcs sampled on their exactly checked safe side
+  if (succeeded(r.plan.status)) d.metrics = datasets::metricFields(r.metrics);
+  for (auto& [k, v] : r.plan.statistics) d.statistics.emplace_back(k, v);
+  return d;
+}
+
+datasets::CellsDocument cellsDocument(const std::string& map, const std::string& method, const std::map<std::string, std::string>& params,
+                                      const Problem& problem, const planners::Decomposed& dec, bool sampled) {
+  datasets::CellsDocument doc;
+  doc.map = map;
+  doc.method = method;
+  doc.robotRadius = problem.robots.at(0).radius;
+  doc.params = params;
+  doc.directionDegrees = -dec.cells.rotation.degrees();
+  doc.rotationCos = dec.cells.rotation.c.get_str();
+  doc.rotationSin = dec.cells.rotation.s.get_str();
+  doc.cfreeArea = dec.space->area();
+  doc.unwalledVertices = dec.cells.unwalledVertices;
+  for (const DecomposedCell& c : dec.cells.cells) {
+    doc.cells.push_back({unrotate(c.region, dec.cells.rotation), c.neighbours});
+    doc.cells.back().region.area = c.area;
+  }
+  for (const CellWall& w : dec.cells.walls) {
+    const PointD a = w.vertical ? PointD{w.at, w.lo} : PointD{w.lo, w.at}, b = w.vertical ? PointD{w.at, w.hi} : PointD{w.hi, w.at};
+    doc.walls.push_back({w.a, w.b, dec.cells.rotation.inverse(a), dec.cells.rotation.inverse(b)});
+  }
+  if (sampled) doc.sampled = sampledCells(dec.cells, datasets::kArcSampleTolerance, &doc.unplaced);
+  return doc;
+}
+
+datasets::CSpaceDocument cspaceDocument(const std::string& map, const Problem& problem, const CSpace& cs) {
+  datasets::CSpaceDocument doc;
+  doc.map = map;
+  doc.robotRadius = problem.robots.at(0).radius;
+  doc.epsilon = cs.epsilon();
+  doc.freeArea = freeArea(problem.workspace).get_d();
+  doc.cfreeArea = cs.area();
+  doc.components = cs.components();
+  doc.obstacles = cs.obstacles();
+  doc.cspace = &cs;  // GeoJSON: C-free polygons checked to lie in the exact C-free
+  if (problem.robots[0].start) {
+    doc.start = PointD{problem.robots[0].start->x.get_d(), problem.robots[0].start->y.get_d()};
+    doc.startComponent = cs.componentOf(*problem.robots[0].start);
+  }
+  return doc;
 }
 
 MetricOptions defaultMetricOptions() {
