@@ -40,6 +40,7 @@ cases = [(os.path.abspath(os.path.join(data, "rooms.grid")), "0.125", "stc", 30)
          (os.path.join(tmp, "large.yaml"), "0.1", "bsa_spiral", 3)]
 
 python_ms = {}
+conversions = {}
 for path, radius, planner, reps in cases:
     w = coverkit.load_map(path)
     times = []
@@ -50,6 +51,12 @@ for path, radius, planner, reps in cases:
         times.append((time.perf_counter() - t0) * 1000)
     assert plan.valid
     python_ms[(path, radius, planner)] = statistics.median(times)
+    # what only Python pays: the path as numpy, the metrics as a dict
+    t0 = time.perf_counter()
+    for _ in range(10):
+        v = plan.paths[0].vertices
+        m = plan.metrics
+    conversions[(path, radius, planner)] = ((time.perf_counter() - t0) * 100, len(v), len(m))
 
 env = dict(os.environ, COVERKIT_BINDING_CASES=";".join(f"{p}|{r}|{pl}" for p, r, pl, _ in cases))
 out = subprocess.run([bench, "--benchmark_filter=BM_PlanInProcess", "--benchmark_format=json",
@@ -61,8 +68,10 @@ for b in json.loads(out)["benchmarks"]:
         key = b["run_name"].split("/", 1)[1].split("|")
         cpp_ms[tuple(key)] = b["real_time"]
 
-print("| map | r | planner | C++ ms (median) | Python ms (median) | overhead ms | overhead % |")
-print("|---|---|---|---|---|---|---|")
+print("| map | r | planner | C++ ms (median) | Python ms (median) | difference ms | difference % | path points | vertices + metrics to Python, ms |")
+print("|---|---|---|---|---|---|---|---|---|")
 for path, radius, planner, _ in cases:
-    c, p = cpp_ms[(path, radius, planner)], python_ms[(path, radius, planner)]
-    print(f"| {os.path.basename(path)} | {radius} | {planner} | {c:.2f} | {p:.2f} | {p - c:.2f} | {100 * (p - c) / c:.1f} |")
+    key = (path, radius, planner)
+    c, p = cpp_ms[key], python_ms[key]
+    ms, points, _ = conversions[key]
+    print(f"| {os.path.basename(path)} | {radius} | {planner} | {c:.2f} | {p:.2f} | {p - c:.2f} | {100 * (p - c) / c:.1f} | {points} | {ms:.3f} |")

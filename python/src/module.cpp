@@ -203,6 +203,21 @@ py::dict reportDict(const ValidationReport& v) {
   return d;
 }
 
+/// Declared parameters: name, type, default, range, help.
+py::list paramList(const std::vector<planners::ParamSpec>& specs) {
+  py::list out;
+  for (const planners::ParamSpec& s : specs) {
+    py::dict q;
+    q["name"] = s.name;
+    q["type"] = planners::toString(s.type);
+    q["default"] = s.defaultValue;
+    q["range"] = s.range;
+    q["help"] = s.help;
+    out.append(q);
+  }
+  return out;
+}
+
 py::dict pairsDict(const std::vector<std::pair<std::string, double>>& kv) {
   py::dict d;
   for (const auto& [k, v] : kv) d[py::str(k)] = v;
@@ -380,17 +395,7 @@ PYBIND11_MODULE(_coverkit, m) {
           py::dict d;
           d["name"] = name;
           d["description"] = planner->description();
-          py::list params;
-          for (const planners::ParamSpec& s : planner->params()) {
-            py::dict q;
-            q["name"] = s.name;
-            q["type"] = planners::toString(s.type);
-            q["default"] = s.defaultValue;
-            q["range"] = s.range;
-            q["help"] = s.help;
-            params.append(q);
-          }
-          d["parameters"] = params;
+          d["parameters"] = paramList(planner->params());
           const planners::Capabilities c = planner->capabilities();
           py::dict caps;
           caps["online"] = c.online;
@@ -411,17 +416,7 @@ PYBIND11_MODULE(_coverkit, m) {
           py::dict e;
           e["name"] = name;
           e["description"] = d->description();
-          py::list params;
-          for (const planners::ParamSpec& s : d->params()) {
-            py::dict q;
-            q["name"] = s.name;
-            q["type"] = planners::toString(s.type);
-            q["default"] = s.defaultValue;
-            q["range"] = s.range;
-            q["help"] = s.help;
-            params.append(q);
-          }
-          e["parameters"] = params;
+          e["parameters"] = paramList(d->params());
           out.append(e);
         }
         return out;
