@@ -7,7 +7,8 @@ build="$1" src="$2" python="$3" pydir="$4"
 prefix="$(mktemp -d)"
 trap 'rm -rf "$prefix"' EXIT
 cmake --install "$build" --prefix "$prefix" > /dev/null
-"$prefix/bin/coverkit" list | grep -q '^boustrophedon:'
+listed="$("$prefix/bin/coverkit" list)"   # not piped into grep -q: with pipefail its early exit is a SIGPIPE
+grep -q '^boustrophedon:' <<< "$listed" || { echo "installed coverkit does not list boustrophedon"; exit 1; }
 if [ -n "$pydir" ]; then
   (cd "$prefix" && PYTHONPATH="$prefix/$pydir" "$python" -c "import coverkit, os; assert os.path.dirname(coverkit.__file__).startswith('$prefix'); print(len(coverkit.planners()), 'planners from', coverkit.__file__)")
 fi

@@ -252,6 +252,14 @@ int main(int argc, char** argv) {
   std::vector<std::string> params;
   bool unknownFree = false, json = false, showCells = false, showTree = false, showCspace = false, quiet = false;
   std::string timeLimitText;
+  bool timings = false;
+  unsigned threadCount = 0;
+  auto addSpeedOptions = [&](CLI::App* c) {
+    c->add_flag("--timings", timings, "print wall and CPU time per phase and the peak memory on stderr");
+    c->add_option("--threads", threadCount, "threads for the phases that split (metrics' rasters); 0, the default: every core. "
+                                            "The results do not depend on it")
+        ->check(CLI::Range(0u, 1024u));
+  };
 
   auto addMapOptions = [&](CLI::App* c, bool needRadius) {
     c->add_option("--map", map, "map file (.yaml ROS map, .map Moving AI, .wkt, .geojson, .grid)")->required();
@@ -268,6 +276,7 @@ int main(int argc, char** argv) {
   plan->add_option("--time-limit", timeLimitText, "seconds, finite and >= 0 (0: none)");
   plan->add_option("--out", out, "output path file (.json, .csv, .geojson)")->required();
   plan->add_option("--picture", picture, "picture (.png, .svg)");
+  addSpeedOptions(plan);
 
   auto* eval = app.add_subcommand("evaluate", "validate a path file and compute its metrics");
   addMapOptions(eval, false);
@@ -276,6 +285,7 @@ int main(int argc, char** argv) {
   eval->add_flag("--json", json, "print one JSON object");
   bool evalCspace = false;
   eval->add_flag("--cspace", evalCspace, "also check every piece against the (conservative) C-obstacles: violations of kind \"cspace\"");
+  addSpeedOptions(eval);
 
   auto* render = app.add_subcommand("render", "draw a map with its cells, a planner's tree and a path");
   addMapOptions(render, true);
@@ -438,14 +448,22 @@ int main(int argc, char** argv) {
       datasets::checkOutputFile(out, "--out", {".json", ".csv", ".geojson"});
       if (!picture.empty()) experiments::checkPictureOutput(picture);
       planners::Registry::instance().create(planner);  // unknown planner: before any work
+      experiments::setThreads(threadCount);
       Progress progress(6);
+      experiments::PhaseTimer timer;
       progress.step("reading the map");
+      timer.begin("read");
       Problem problem = makeProblem(map, radius, start, unknownFree, cellSize);
       progress.step("classifying cells");
+      timer.begin("cells");
       const planners::PlanningContext ctx = planners::makeContext(std::move(problem));
-      const experiments::RunResult r =
-          experiments::runOnce(ctx, planner, kv, timeLimit, [&](const std::string& what) { progress.step(what); });
+      const std::map<std::string, std::string> phaseName{{"planning", "plan"}, {"validating", "validate"}, {"metrics", "metrics"}};
+      const experiments::RunResult r = experiments::runOnce(ctx, planner, kv, timeLimit, [&](const std::string& what) {
+        progress.step(what);
+        timer.begin(phaseName.at(what));
+      });
       progress.step("writing");
+      timer.begin("write");
       datasets::OutputBatch outputs;  // everything made in memory first, then written all or nothing
       outputs.add(out, datasets::pathFileContent(out, experiments::pathDocument(ctx, r)));
       if (!picture.empty()) {
@@ -454,6 +472,11 @@ int main(int argc, char** argv) {
         outputs.add(picture, experiments::pictureBytes(picture, pc));
       }
       outputs.commit();
+      timer.end();
+      for (const auto& [k, v] : r.plan.timings)
+        if (k != "cells") timer.part("plan", k, v);
+      for (const auto& [k, v] : r.metrics.seconds) timer.part("metrics", k, v);
+      if (timings) std::cerr << timer.report();
       std::cout << planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "
                 << (r.validation.valid ? "yes" : "no") << "; sub-cell coverage " << formatDouble(r.metrics.subcellCoverage) << "; length "
                 << formatDouble(r.metrics.length) << "; wrote " << out << "\n";
@@ -461,6 +484,9 @@ int main(int argc, char** argv) {
       return succeeded(r.plan.status) && r.validation.valid ? 0 : 1;
     }
     if (*eval) {
+      experiments::setThreads(threadCount);
+      experiments::PhaseTimer timer;
+      timer.begin("read");
       const datasets::PathDocument doc = datasets::readPathFile(pathFile);
       std::string rad = radius;
       if (rad.empty()) {
@@ -474,18 +500,25 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < doc.paths.size(); ++i)
         problem.robots[i].start = start.empty() ? Point{exactFromDouble(doc.paths[i].start.x), exactFromDouble(doc.paths[i].start.y)}
                                                 : experiments::parsePoint(start, "--start");
+      timer.begin("cells");
       const planners::PlanningContext ctx = planners::makeContext(problem);
       ValidationOptions vo;
       std::optional<CSpace> evalSpace;
       if (evalCspace) {
+        timer.begin("C-space");
         evalSpace.emplace(ctx.problem.workspace, ctx.problem.robots[0].radius);
         vo.cspace = &*evalSpace;
       }
+      timer.begin("validate");
       const ValidationReport v = validatePaths(ctx.problem, doc.paths, vo);
+      timer.begin("metrics");
       MetricOptions mo = experiments::defaultMetricOptions();
       mo.cspace = evalSpace ? &*evalSpace : nullptr;
       mo.pathsKnownClear = v.valid;
       const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, mo);
+      timer.end();
+      for (const auto& [k, sec] : m.seconds) timer.part("metrics", k, sec);
+      if (timings) std::cerr << timer.report();
       if (!m.coverableSkipped.empty()) std::cerr << "coverkit: note: coverable coverage not computed: " << m.coverableSkipped << "\n";
       if (json) std::cout << evaluationJson(v, m).dump(1) << "\n";
       else printEvaluation(v, m);

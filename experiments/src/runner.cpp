@@ -4,7 +4,13 @@
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
 
+#include <algorithm>
 #include <chrono>
+#include <ctime>
+#include <iomanip>
+#include <sstream>
+
+#include <sys/resource.h>
 
 namespace coverkit::experiments {
 
@@ -86,10 +92,73 @@ datasets::CSpaceDocument cspaceDocument(const std::string& map, const Problem& p
   return doc;
 }
 
+namespace {
+unsigned gThreads = 0;
+double wallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+double cpuNow() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+}  // namespace
+
+void setThreads(unsigned n) { gThreads = n; }
+unsigned threads() { return gThreads; }
+
 MetricOptions defaultMetricOptions() {
   MetricOptions o;
   o.coverable = true;
+  o.threads = gThreads;
   return o;
+}
+
+void PhaseTimer::begin(const std::string& phase) {
+  end();
+  rows_.push_back({phase, 0, 0});
+  wall0_ = wallNow();
+  cpu0_ = cpuNow();
+  running_ = true;
+}
+
+void PhaseTimer::end() {
+  if (!running_) return;
+  for (auto it = rows_.rbegin(); it != rows_.rend(); ++it)
+    if (it->cpu >= 0) {
+      it->wall = wallNow() - wall0_;
+      it->cpu = cpuNow() - cpu0_;
+      break;
+    }
+  running_ = false;
+}
+
+void PhaseTimer::part(const std::string& phase, const std::string& name, double wallSeconds) {
+  auto at = std::find_if(rows_.begin(), rows_.end(), [&](const Row& r) { return r.cpu >= 0 && r.phase == phase; });
+  if (at == rows_.end()) return;
+  ++at;
+  while (at != rows_.end() && at->cpu < 0) ++at;   // after the parts it has
+  rows_.insert(at, {name, wallSeconds, -1});
+}
+
+std::string PhaseTimer::report() const {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(4);
+  os << "coverkit: timings (s)        wall        cpu\n";
+  double wall = 0, cpu = 0;
+  for (const Row& r : rows_) {
+    const std::string name = r.cpu >= 0 ? r.phase : "  " + r.phase;
+    os << "  " << std::left << std::setw(26) << name.substr(0, 26) << std::right << std::setw(10) << r.wall;
+    if (r.cpu >= 0) os << std::setw(11) << r.cpu;
+    os << "\n";
+    if (r.cpu >= 0) {
+      wall += r.wall;
+      cpu += r.cpu;
+    }
+  }
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  os << "  " << std::left << std::setw(26) << "total" << std::right << std::setw(10) << wall << std::setw(11) << cpu << "\n";
+  os << "  peak memory " << std::setprecision(1) << static_cast<double>(u.ru_maxrss) / 1024.0 << " MiB\n";
+  return os.str();
 }
 
 Point parsePoint(const std::string& text, const std::string& option) {

@@ -19,8 +19,36 @@ struct RunResult {
   double totalSeconds = 0;
 };
 
-/// The metric options of the command line: everything, including the coverable region.
+/// The metric options of the command line: everything, including the coverable region, on
+/// `threads()` threads.
 MetricOptions defaultMetricOptions();
+
+/// Threads for the heavy phases that split (the metrics' rasters): `--threads`, 0 = every core.
+/// Results are the same for any number.
+void setThreads(unsigned n);
+unsigned threads();
+
+/// `--timings`: wall and CPU time per phase of a command, and the process's peak memory, printed on
+/// stderr (nothing variable goes into an output file). CPU time is the process's, all threads.
+class PhaseTimer {
+public:
+  /// Ends the running phase (if any) and starts `phase`.
+  void begin(const std::string& phase);
+  void end();
+  /// A part of `phase` measured inside it (wall time only), shown indented below it.
+  void part(const std::string& phase, const std::string& name, double wallSeconds);
+  /// The table: phase, wall s, CPU s; then the total and the peak resident memory.
+  std::string report() const;
+
+private:
+  struct Row {
+    std::string phase;
+    double wall = 0, cpu = -1;   ///< cpu < 0: a part (wall only)
+  };
+  std::vector<Row> rows_;
+  bool running_ = false;
+  double wall0_ = 0, cpu0_ = 0;
+};
 
 /// `onPhase`, when set, is called as each phase starts ("planning", "validating", "metrics").
 RunResult runOnce(const planners::PlanningContext& context, const std::string& planner,

@@ -322,7 +322,7 @@ std::vector<int> startComponents(const CSpace& joined, const std::vector<Point>&
 
 /// coverableArea (cspace.h) from the helpers, for the components `ks` of `joined`.
 double coverableFrom(const Workspace& w, const Rational& r, const CSpace& joined, const CSpace& innerSpace, double delta,
-                     double epsPrime, const std::vector<int>& ks, double& errorBound) {
+                     double epsPrime, const std::vector<int>& ks, double& errorBound, unsigned threads) {
   errorBound = 0;
   if (ks.empty()) return 0;
   auto inK = [&](int k) { return std::find(ks.begin(), ks.end(), k) != ks.end(); };
@@ -352,7 +352,7 @@ double coverableFrom(const Workspace& w, const Rational& r, const CSpace& joined
     add(comps[static_cast<std::size_t>(k)].outer);
     for (const CurveLoop& l : comps[static_cast<std::size_t>(k)].holes) add(l);
   }
-  const double band = rasterCoveredArea(w, r, loops, 4'000'000, errorBound);
+  const double band = rasterCoveredArea(w, r, loops, 4'000'000, errorBound, threads);
   // the two parts overlap where a point of the first lies within r of ∂K: within δ + eps' of its
   // own boundary (an inner band; its boundary arcs have radius 2r − 2δ, so the band is at most
   // width × perimeter × (1 + width / (2r − 2δ)))
@@ -364,11 +364,11 @@ double coverableFrom(const Workspace& w, const Rational& r, const CSpace& joined
 }  // namespace
 
 double coverableArea(const Workspace& w, const Rational& radius, const std::vector<Point>& starts, double& errorBound,
-                     double relativeEps) {
+                     double relativeEps, unsigned threads) {
   errorBound = 0;
   if (radius < 0) throw InputError(w.name, "radius", "robot radius must be >= 0");
   const ClosedHelpers h = closedHelpers(w, radius, relativeEps, true);
-  return coverableFrom(w, radius, *h.joined, *h.inner, h.delta, h.epsPrime, startComponents(*h.joined, starts), errorBound);
+  return coverableFrom(w, radius, *h.joined, *h.inner, h.delta, h.epsPrime, startComponents(*h.joined, starts), errorBound, threads);
 }
 
 int CSpace::closedComponentOf(const Point& p) const {
@@ -386,7 +386,7 @@ double CSpace::closedMargin() const {
   return impl_->delta;
 }
 
-double CSpace::coverableArea(const std::vector<Point>& starts, double& errorBound) const {
+double CSpace::coverableArea(const std::vector<Point>& starts, double& errorBound, unsigned threads) const {
   if (!impl_->inner) {
     ClosedHelpers h = closedHelpers(impl_->workspace, impl_->radius, impl_->relativeEps, true);
     impl_->joined = std::move(h.joined);
@@ -399,7 +399,7 @@ double CSpace::coverableArea(const std::vector<Point>& starts, double& errorBoun
   auto it = impl_->coverable.find(ks);
   if (it == impl_->coverable.end()) {
     double err = 0;
-    const double a = coverableFrom(impl_->workspace, impl_->radius, *impl_->joined, *impl_->inner, impl_->delta, impl_->epsPrime, ks, err);
+    const double a = coverableFrom(impl_->workspace, impl_->radius, *impl_->joined, *impl_->inner, impl_->delta, impl_->epsPrime, ks, err, threads);
     it = impl_->coverable.emplace(ks, std::make_pair(a, err)).first;
   }
   errorBound = it->second.second;

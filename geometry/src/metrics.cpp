@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <limits>
 #include <optional>
+#include <thread>
 #include <cmath>
 #include <unordered_map>
 
@@ -38,6 +40,12 @@ std::pair<double, double> tangents(const PathSegment& s) {
 Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,
                        const MetricOptions& o) {
   Metrics m;
+  auto t0 = std::chrono::steady_clock::now();
+  auto lap = [&](const char* part) {
+    const auto t = std::chrono::steady_clock::now();
+    m.seconds.emplace_back(part, std::chrono::duration<double>(t - t0).count());
+    t0 = t;
+  };
   const double D = cells.subSizeD();
   const double r = problem.robots.at(0).radius.get_d();
   // Sub-cells entered by the robot centre: sampling every D/32 along each piece (arcs first
@@ -104,6 +112,7 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   m.overlapRatio = m.enteredSubcells ? static_cast<double>(m.revisitedSubcells) / m.enteredSubcells : 0;
   m.time = o.speed > 0 ? m.length / o.speed : 0;
 
+  lap("sub-cells, length, turns");
   m.freeArea = freeArea(problem.workspace).get_d();
   double area = 0;
   // A path the validator accepts sweeps only closure(F): the exact area can skip clipping to F,
@@ -121,7 +130,7 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
     m.areaCoverageError = 0;
   } else {
     double err = 0;
-    area = rasterCoveredArea(problem.workspace, problem.robots.at(0).radius, paths, o.rasterMaxPixels, err);
+    area = rasterCoveredArea(problem.workspace, problem.robots.at(0).radius, paths, o.rasterMaxPixels, err, o.threads);
     m.areaMethod = "raster";
     m.areaCoverageError = m.freeArea > 0 ? err / m.freeArea : 0;
   }
@@ -130,6 +139,7 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   double swept = 0;
   for (const Path& p : paths) swept += 2 * r * p.length() + M_PI * r * r;
   m.sweptAreaOverlap = area > 0 ? swept / area - 1 : 0;
+  lap("covered area");
   const std::size_t vertices = problem.workspace.vertexCount();
   if (o.coverable && !o.cspace && vertices > o.coverableMaxVertices) {
     m.coverableSkipped = "the workspace has " + std::to_string(vertices) + " vertices, more than " +
@@ -140,11 +150,12 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
     std::vector<Point> starts;
     for (const Path& p : paths) starts.push_back({exactFromDouble(p.start.x), exactFromDouble(p.start.y)});
     double err = 0;
-    m.coverableArea = o.cspace ? o.cspace->coverableArea(starts, err)
-                               : coverableArea(problem.workspace, problem.robots.at(0).radius, starts, err);
+    m.coverableArea = o.cspace ? o.cspace->coverableArea(starts, err, o.threads)
+                               : coverableArea(problem.workspace, problem.robots.at(0).radius, starts, err, 1e-6, o.threads);
     m.coverableAreaError = err;
     m.hasCoverable = true;
     m.coverableCoverage = m.coverableArea > 0 ? area / m.coverableArea : 0;
+    lap("coverable region");
   }
   return m;
 }
@@ -215,7 +226,7 @@ struct Square {
 }  // namespace
 
 double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::vector<Path>& paths,
-                         std::size_t maxPixels, double& errorBound) {
+                         std::size_t maxPixels, double& errorBound, unsigned threads) {
   // Squares are classified by their centre's distance d to the path and to W's boundary: a square
   // of half-diagonal e whose centre is farther than e from the boundary lies on one side of it, and
   // it is wholly covered when d <= r - e, wholly uncovered when d > r + e. Uncertain squares are
@@ -234,16 +245,17 @@ double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::
   const double slack = flatten + 1e-9 * std::max({1.0, std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
   const PieceGrid pieces(paths, flatten, std::max(r, h0), x0 - r, y0 - r, x1 + r, y1 + r);
   detail::EdgeIndex edges(w);
-  auto nearBoundary = [&](double x, double y, double e) {
+  // a query marks the edges it has seen in the index: one index per thread
+  auto nearBoundary = [&](detail::EdgeIndex& index, double x, double y, double e) {
     bool near = false;
-    edges.query(x - e, y - e, x + e, y + e, [&](const detail::IndexedEdge& s) {
+    index.query(x - e, y - e, x + e, y + e, [&](const detail::IndexedEdge& s) {
       near = near || detail::pointSegDist(x, y, s.ax, s.ay, s.bx, s.by) <= e;
     });
     return near;
   };
-  auto insideW = [&](double x, double y) {  // ray to the right, half-open rule
+  auto insideW = [&](detail::EdgeIndex& index, double x, double y) {  // ray to the right, half-open rule
     bool in = false;
-    edges.query(x, y, x1 + 1, y, [&](const detail::IndexedEdge& s) {
+    index.query(x, y, x1 + 1, y, [&](const detail::IndexedEdge& s) {
       if ((s.ay > y) != (s.by > y) && s.ax + (y - s.ay) * (s.bx - s.ax) / (s.by - s.ay) > x) in = !in;
     });
     return in;
@@ -281,28 +293,57 @@ double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::
   double covered = 0, side = h0;
   std::size_t budget = 4 * maxPixels;
   std::vector<Square> next;
+  // Each level's squares are split into contiguous runs, one per thread; a run counts its wholly
+  // covered and uncertain squares and lists its children in order. Every square of a level adds
+  // the same `area`, so adding a run's counts one by one, runs in order, gives the sum a single
+  // thread makes, to the bit: the result does not depend on the number of threads.
+  struct Run {
+    std::vector<Square> next;
+    std::size_t covered = 0, uncertain = 0;
+  };
+  const unsigned threadCount = std::max(1u, threads == 0 ? std::thread::hardware_concurrency() : threads);
+  std::vector<Run> runs;
+  std::vector<detail::EdgeIndex> indices(threadCount - 1, edges);   // the threads' own; edges is the caller's
   for (int lev = 0;; ++lev) {
     const double e = side * std::sqrt(0.5), area = side * side;
     next.clear();
     const bool last = lev == maxLevels || 4 * level.size() > budget;
-    for (const Square& s : level) {
-      // below level 0 a known side means the parent square did not meet the boundary
-      const bool knownSide = lev > 0 && s.inside >= 0;
-      const bool nearB = !knownSide && nearBoundary(s.cx, s.cy, e + slack);
-      const bool inside = (lev == 0 || knownSide) ? s.inside == 1 : insideW(s.cx, s.cy);
-      if (!nearB && !inside) continue;
-      const double d = pieces.distance(s.cx, s.cy, r + e + slack, nearB ? 0 : r - e - slack);
-      if (d > r + e + slack) continue;                            // wholly uncovered
-      if (!nearB && d <= r - e - slack) { covered += area; continue; }  // wholly covered
-      if (last) {
-        if (inside && d <= r) covered += area;
-        errorBound += area;
-        continue;
+    const double q = side / 4;
+    auto classify = [&](std::size_t from, std::size_t to, Run& run, detail::EdgeIndex& index) {
+      for (std::size_t i = from; i < to; ++i) {
+        const Square& s = level[i];
+        // below level 0 a known side means the parent square did not meet the boundary
+        const bool knownSide = lev > 0 && s.inside >= 0;
+        const bool nearB = !knownSide && nearBoundary(index, s.cx, s.cy, e + slack);
+        const bool inside = (lev == 0 || knownSide) ? s.inside == 1 : insideW(index, s.cx, s.cy);
+        if (!nearB && !inside) continue;
+        const double d = pieces.distance(s.cx, s.cy, r + e + slack, nearB ? 0 : r - e - slack);
+        if (d > r + e + slack) continue;                                 // wholly uncovered
+        if (!nearB && d <= r - e - slack) { ++run.covered; continue; }  // wholly covered
+        if (last) {
+          run.covered += inside && d <= r;
+          ++run.uncertain;
+          continue;
+        }
+        const signed char known = nearB ? -1 : static_cast<signed char>(inside);
+        for (double dx : {-q, q})
+          for (double dy : {-q, q}) run.next.push_back({s.cx + dx, s.cy + dy, known});
       }
-      const double q = side / 4;
-      const signed char known = nearB ? -1 : static_cast<signed char>(inside);
-      for (double dx : {-q, q})
-        for (double dy : {-q, q}) next.push_back({s.cx + dx, s.cy + dy, known});
+    };
+    // threads only for levels worth it (a thread costs tens of microseconds)
+    const std::size_t n = level.size(), parts = std::min<std::size_t>(threadCount, std::max<std::size_t>(1, n / 2048));
+    runs.assign(parts, Run{});
+    {
+      std::vector<std::thread> pool;
+      for (std::size_t t = 1; t < parts; ++t)
+        pool.emplace_back(classify, n * t / parts, n * (t + 1) / parts, std::ref(runs[t]), std::ref(indices[t - 1]));
+      classify(0, n / parts, runs[0], edges);
+      for (std::thread& th : pool) th.join();
+    }
+    for (Run& run : runs) {
+      for (std::size_t k = 0; k < run.covered; ++k) covered += area;
+      for (std::size_t k = 0; k < run.uncertain; ++k) errorBound += area;
+      next.insert(next.end(), run.next.begin(), run.next.end());
     }
     if (last) break;
     budget -= std::min(budget, next.size());

@@ -346,5 +346,18 @@ expect_bad "experiment decompositions: --size" "--size: decompositions: applies 
 expect_bad "plan boustrophedon: direction not a number" "--param: direction=west: must be a number in [-360:360] or best" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param direction=west --out "$T/out.json"
 expect_bad "plan boustrophedon: unknown decomposition" "--param: decomposition=grid: must be one of boustrophedon|trapezoidal" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param decomposition=grid --out "$T/out.json"
 
+# --------------------------------------------------------------------------------------------- timings and threads
+has_phases() { local f="$1"; shift; for phase in "$@"; do grep -q "^ *$phase" "$f" || return 1; done; }
+"$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/t0.json" > /dev/null 2> "$T/t0.err" &&
+  "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/t1.json" --timings --threads 1 > /dev/null 2> "$T/t1.err" &&
+  "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/t3.json" --timings --threads 3 > /dev/null 2> "$T/t3.err" &&
+  cmp -s "$T/t0.json" "$T/t1.json" && cmp -s "$T/t0.json" "$T/t3.json" && [ ! -s "$T/t0.err" ] &&
+  has_phases "$T/t1.err" read cells plan validate metrics "coverable region" write total "peak memory" &&
+  ok || bad "plan --timings --threads: outputs differ or phases missing: $(cat "$T/t1.err")"
+"$CK" evaluate --map "$DATA/rooms.grid" --path "$T/t0.json" --json --threads 1 > "$T/e1.out" 2> /dev/null &&
+  "$CK" evaluate --map "$DATA/rooms.grid" --path "$T/t0.json" --json --threads 2 --timings > "$T/e2.out" 2> "$T/e2.err" &&
+  cmp -s "$T/e1.out" "$T/e2.out" && grep -q "^  metrics" "$T/e2.err" && grep -q "^  validate" "$T/e2.err" && ok || bad "evaluate --timings --threads"
+expect_bad "plan: --threads not a number" "--threads" plan --map "$T/room.wkt" --radius 0.25 --planner stc --threads many --out "$T/out.json"
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -72,6 +72,23 @@ TEST(Metrics, RasterBoundStaysSmallBetweenTouchingPasses) {
   EXPECT_LT(err / 160, 0.01);
 }
 
+TEST(Metrics, RasterIsTheSameToTheBitOnAnyNumberOfThreads) {
+  // a generic direction and an arc: the raster decides every square
+  const Problem p = room(12, 9, Rational(1, 3));
+  Path path = Path::fromPoints({{0.4, 0.4}, {11.1, 2.3}, {1.7, 5.9}, {10.6, 8.5}});
+  path.segments.push_back(PathSegment::arc({10.6, 8.5}, {6.6, 4.5}, {6.6, 8.5}, false));
+  double err1 = 0;
+  const double a1 = rasterCoveredArea(p.workspace, Rational(1, 3), {path}, 1'000'000, err1, 1);
+  EXPECT_GT(a1, 0);
+  EXPECT_GT(err1, 0);
+  for (unsigned threads : {2u, 3u, 7u, 0u}) {
+    double err = 0;
+    const double a = rasterCoveredArea(p.workspace, Rational(1, 3), {path}, 1'000'000, err, threads);
+    EXPECT_EQ(a, a1) << threads;   // bit for bit, not near
+    EXPECT_EQ(err, err1) << threads;
+  }
+}
+
 TEST(Metrics, LengthTurnsAndSubcells) {
   Problem p = room(4, 4, Rational(1, 2));
   const CellGrid cells = classifyCells(p.workspace, Rational(1));

@@ -4,6 +4,7 @@
 #include <coverkit/geometry/path.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coverkit {
@@ -28,6 +29,8 @@ struct MetricOptions {
   const CSpace* cspace = nullptr;
   /// The caller's validator already accepted the paths' continuity and clearance: skip that check.
   bool pathsKnownClear = false;
+  /// Threads for the rasterised areas (0: every core); the values do not depend on it.
+  unsigned threads = 0;
 };
 
 struct Metrics {
@@ -53,6 +56,9 @@ struct Metrics {
   double turningAngleDeg = 0;
   double time = 0;                     ///< length / speed (s)
   std::size_t segments = 0;
+  /// Wall seconds per part ("sub-cells, length, turns", "covered area", "coverable region"): for
+  /// `--timings`, never written to a file.
+  std::vector<std::pair<std::string, double>> seconds;
 };
 
 Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,
@@ -65,8 +71,9 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
 /// with F is skipped: same value, far less work on maps with many vertices.
 bool exactCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths, double& area,
                       bool pathIsClear = false);
-/// Rasterised area of F ∩ swept with a rigorous error bound (pixels whose status is uncertain).
+/// Rasterised area of F ∩ swept with a rigorous error bound (pixels whose status is uncertain), on
+/// `threads` threads (0: every core); the result is the same, to the bit, for any number.
 double rasterCoveredArea(const Workspace& w, const Rational& r, const std::vector<Path>& paths,
-                         std::size_t maxPixels, double& errorBound);
+                         std::size_t maxPixels, double& errorBound, unsigned threads = 0);
 
 }  // namespace coverkit
