@@ -245,7 +245,9 @@ public:
     const double A = (leftWall ? 0.5 : 0) + (rightWall ? 0.5 : 0);
     const double span = w - t * ((leftWall ? 0 : 1) + (rightWall ? 0 : 1));
     int m = std::max(1, static_cast<int>(std::ceil(span / (2 * r_) + 1 - A - 1e-9)));
-    if (m % 2 == 0) ++m;   // an odd number: the serpentine ends on the side it did not start
+    // an odd number, so that the serpentine ends on the side it did not start; but two lanes need
+    // no third: the first pass follows one side, the serpentine's one turn the other (boustrophedon.h)
+    if (m % 2 == 0 && m != 2) ++m;
     std::vector<double> out;
     if (m - 1 + A <= 0) return {(c.xmin + c.xmax) / 2};
     const double s = span / (m - 1 + A);
@@ -271,6 +273,28 @@ public:
   }
 
   std::size_t checks() const { return checks_; }
+
+  /// A transition made of line segments, pulled straight: from each point, the farthest later
+  /// point of the route that a clear segment reaches (checked exactly), and on from there. Fewer
+  /// turns and a shorter way; the route's own segments, already clear, are the fallback.
+  void shortcut(std::vector<PathSegment>& route) const {
+    if (route.size() < 2) return;
+    for (const PathSegment& s : route)
+      if (s.kind != PathSegment::Kind::kLine) return;
+    std::vector<PointD> pts{route.front().from};
+    for (const PathSegment& s : route) pts.push_back(s.to);
+    std::vector<PathSegment> out;
+    for (std::size_t i = 0; i + 1 < pts.size();) {
+      std::size_t j = pts.size() - 1;
+      for (; j > i + 1; --j) {
+        ++checks_;
+        if (space_.segmentClear(exactOf(pts[i]), exactOf(pts[j]))) break;
+      }
+      if (pts[i].x != pts[j].x || pts[i].y != pts[j].y) out.push_back(PathSegment::line(pts[i], pts[j]));
+      i = j;
+    }
+    route.swap(out);
+  }
 
 private:
   /// The cell's end at x is (almost) all wall: its neighbour's lanes sweep beside it.
@@ -482,6 +506,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       ++unreached;
       continue;
     }
+    walk.shortcut(route);
     segs.insert(segs.end(), route.begin(), route.end());
     phaseTurns["turns_transitions"] += turnsIn(segs, mark0, segs.size());
     std::size_t mark = segs.size();
@@ -501,7 +526,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     }
     phaseTurns["turns_lanes"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
-    for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
+    if (m != 2)   // two lanes: the serpentine's turn has followed the other side already
+      for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
     phaseTurns["turns_last_side"] += turnsIn(segs, mark, segs.size());
     if (!ok) ++broken;
     if (!ok) ++skipped;   // what was swept before the break stays; the cell counts as not done
