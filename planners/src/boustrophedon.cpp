@@ -74,16 +74,151 @@ struct FramePlan {
   double cspaceSeconds = 0, decomposeSeconds = 0, planSeconds = 0;
 };
 
+/// The regions a plan sweeps: chains of cells, each cell joined to the next through a vertical wall
+/// at its right end (boustrophedon.h). The closed intervals of two such cells overlap on the wall,
+/// so every vertical line meets a chain in one interval, and the chain is swept as one cell: its
+/// lanes run on across the walls, and it costs one entry, one set of side passes and no lanes
+/// doubled at the walls inside it.
+class Regions {
+public:
+  Regions(const CellDecomposition& d, bool chain) : d_(d), of_(d.cells.size(), -1) {
+    const std::size_t n = d.cells.size();
+    std::vector<int> next(n, -1), prev(n, -1);
+    if (chain) {
+      // per pair (left cell, right cell) the wall length they share at the left cell's right end
+      std::map<std::pair<int, int>, double> shared;
+      for (const CellWall& w : d.walls) {
+        if (!w.vertical) continue;
+        const DecomposedCell &ca = d.cells[static_cast<std::size_t>(w.a)], &cb = d.cells[static_cast<std::size_t>(w.b)];
+        if (ca.xmax == w.at && cb.xmin == w.at) shared[{w.a, w.b}] += w.length();
+        else if (cb.xmax == w.at && ca.xmin == w.at) shared[{w.b, w.a}] += w.length();
+      }
+      // cells are sorted by (xmin, ymin): left to right, each takes the free right neighbour it
+      // shares the longest wall with
+      for (std::size_t a = 0; a < n; ++a) {
+        int best = -1;
+        double bestLength = 0;
+        for (auto it = shared.lower_bound({static_cast<int>(a), -1}); it != shared.end() && it->first.first == static_cast<int>(a); ++it)
+          if (prev[static_cast<std::size_t>(it->first.second)] < 0 && it->second > bestLength) {
+            best = it->first.second;
+            bestLength = it->second;
+          }
+        if (best < 0) continue;
+        next[a] = best;
+        prev[static_cast<std::size_t>(best)] = static_cast<int>(a);
+      }
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+      if (prev[c] >= 0) continue;
+      const int k = static_cast<int>(members_.size());
+      members_.emplace_back();
+      for (int m = static_cast<int>(c); m >= 0; m = next[static_cast<std::size_t>(m)]) {
+        members_.back().push_back(m);
+        of_[static_cast<std::size_t>(m)] = k;
+      }
+    }
+  }
+
+  int count() const { return static_cast<int>(members_.size()); }
+  int of(int cell) const { return of_[static_cast<std::size_t>(cell)]; }
+  const std::vector<int>& cells(int k) const { return members_[static_cast<std::size_t>(k)]; }
+  double xmin(int k) const { return d_.cells[static_cast<std::size_t>(cells(k).front())].xmin; }
+  double xmax(int k) const { return d_.cells[static_cast<std::size_t>(cells(k).back())].xmax; }
+  double ymid(int k) const {
+    const DecomposedCell& c = d_.cells[static_cast<std::size_t>(cells(k).front())];
+    return (c.ymin + c.ymax) / 2;
+  }
+
+  /// The region's interval at x: of the member cell there, or the union of the two that meet at x.
+  bool interval(int k, double x, double& lo, double& hi) const {
+    bool any = false;
+    for (int c : cells(k)) {
+      const DecomposedCell& cell = d_.cells[static_cast<std::size_t>(c)];
+      double l, h;
+      if (x < cell.xmin || x > cell.xmax || !d_.interval(c, x, l, h)) continue;
+      lo = any ? std::min(lo, l) : l;
+      hi = any ? std::max(hi, h) : h;
+      any = true;
+    }
+    return any;
+  }
+
+  /// The top (or bottom) of the region over [x0, x1]: the member cells' sides in x order.
+  std::vector<SidePiece> side(int k, bool top, double x0, double x1) const {
+    std::vector<SidePiece> out;
+    for (int c : cells(k)) {
+      const DecomposedCell& cell = d_.cells[static_cast<std::size_t>(c)];
+      const double a = std::max(x0, cell.xmin), b = std::min(x1, cell.xmax);
+      if (a > b) continue;
+      for (const SidePiece& piece : d_.side(c, top, a, b)) out.push_back(piece);
+    }
+    return out;
+  }
+
+private:
+  const CellDecomposition& d_;
+  std::vector<int> of_;
+  std::vector<std::vector<int>> members_;
+};
+
 class Walker {
 public:
-  Walker(const Decomposed& d, double r) : cells_(d.cells), space_(*d.space), r_(r), wallsOf_(d.cells.cells.size()) {
-    // per pair of cells its longest wall (the first of equal ones), per cell its walls
-    for (const CellWall& w : cells_.walls) {
-      const CellWall*& best = longest_[{w.a, w.b}];
+  Walker(const Decomposed& d, const Regions& regions, double r)
+      : regions_(regions), space_(*d.space), r_(r), wallsOf_(static_cast<std::size_t>(regions.count())) {
+    // per pair of regions its longest wall (the first of equal ones), per region the walls to others
+    for (const CellWall& w : d.cells.walls) {
+      const int ka = regions.of(w.a), kb = regions.of(w.b);
+      if (ka == kb) continue;
+      const CellWall*& best = longest_[{std::min(ka, kb), std::max(ka, kb)}];
       if (!best || w.length() > best->length()) best = &w;
-      wallsOf_[static_cast<std::size_t>(w.a)].push_back(&w);
-      wallsOf_[static_cast<std::size_t>(w.b)].push_back(&w);
+      wallsOf_[static_cast<std::size_t>(ka)].push_back(&w);
+      wallsOf_[static_cast<std::size_t>(kb)].push_back(&w);
     }
+  }
+
+  /// Regions of several cells connect through their cells, with `cells` (a walker over single
+  /// cells): the interval of a chain jumps at its walls, where splitting a chord in the middle
+  /// may never clear a corner.
+  void setCellLevel(const Walker* cells) { cellLevel_ = cells; }
+
+  /// From u to v in a region of several cells: through the member cells between theirs, from
+  /// wall to wall (the middle of each), each piece inside one cell.
+  bool connectMembers(int k, PointD u, PointD v, std::vector<PathSegment>& out) const {
+    const std::vector<int>& m = regions_.cells(k);
+    const int i = memberAt(k, u), j = memberAt(k, v);
+    if (i < 0 || j < 0) return false;
+    PointD at = u;
+    const int step = j >= i ? 1 : -1;
+    for (int q = i; q != j; q += step) {
+      const PointD door = cellLevel_->door(m[static_cast<std::size_t>(q)], m[static_cast<std::size_t>(q + step)]);
+      if (!cellLevel_->connect(m[static_cast<std::size_t>(q)], at, door, out)) return false;
+      at = door;
+    }
+    return cellLevel_->connect(m[static_cast<std::size_t>(j)], at, v, out);
+  }
+
+  /// The index (in the region's list) of a member cell holding p (the only one of a region of
+  /// one cell), or −1.
+  int memberIndexAt(int k, PointD p) const {
+    if (regions_.cells(k).size() == 1) return 0;
+    return cellLevel_ ? memberAt(k, p) : -1;
+  }
+
+  int memberAt(int k, PointD p) const {
+    const std::vector<int>& m = regions_.cells(k);
+    const double tol = 1e-9 * (1 + std::abs(p.x) + std::abs(p.y));
+    for (std::size_t q = 0; q < m.size(); ++q) {
+      double lo, hi;
+      if (cellLevel_->regions_.interval(m[q], p.x, lo, hi) && p.y >= lo - tol && p.y <= hi + tol) return static_cast<int>(q);
+    }
+    return -1;
+  }
+
+  /// The pairs of neighbouring regions.
+  std::vector<std::pair<int, int>> neighbours() const {
+    std::vector<std::pair<int, int>> out;
+    for (const auto& [pair, wall] : longest_) out.push_back(pair);
+    return out;
   }
 
   /// Appends the line u → v when it is clear in the frame's C-free (radius r + μ), exactly.
@@ -114,6 +249,7 @@ public:
   /// vertical piece of the boundary, so that every split point is on the wrong side of a corner),
   /// through gates at the x of the boundary's vertices instead.
   bool connect(int cell, PointD u, PointD v, std::vector<PathSegment>& out) const {
+    if (cellLevel_ && regions_.cells(cell).size() > 1) return connectMembers(cell, u, v, out);
     const std::size_t mark = out.size();
     if (connectSplit(cell, u, v, out)) return true;
     out.resize(mark);
@@ -121,13 +257,13 @@ public:
     out.resize(mark);
     // two points on (nearly) one vertical line, along which an obstacle's side runs (two doors of
     // one wall line): through a point a little inside the cell beside them
-    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const Extent c = extent(cell);
     const double ym = (u.y + v.y) / 2;
     for (double step = r_ / 100; step < c.xmax - c.xmin; step *= 2)
       for (double side : {-1.0, 1.0}) {
         const PointD p{(u.x + v.x) / 2 + side * step, ym};
         double lo, hi;
-        if (p.x < c.xmin || p.x > c.xmax || !cells_.interval(cell, p.x, lo, hi) || p.y <= lo || p.y >= hi) continue;
+        if (p.x < c.xmin || p.x > c.xmax || !regions_.interval(cell, p.x, lo, hi) || p.y <= lo || p.y >= hi) continue;
         if (connectSplit(cell, u, p, out) && connectSplit(cell, p, v, out)) return true;
         out.resize(mark);
       }
@@ -139,11 +275,11 @@ public:
     if (depth > 18) return false;
     // split halfway in x; two points on one vertical line (two doors on one wall line, where an
     // obstacle may touch it) go through the middle of the cell instead
-    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const Extent c = extent(cell);
     double xm = (u.x + v.x) / 2;
     if (std::abs(u.x - v.x) <= 1e-9 * (c.xmax - c.xmin)) xm = (c.xmin + c.xmax) / 2;
     double lo, hi;
-    if (!cells_.interval(cell, xm, lo, hi)) return false;
+    if (!regions_.interval(cell, xm, lo, hi)) return false;
     const PointD m{xm, (lo + hi) / 2};
     if ((m.x == u.x && m.y == u.y) || (m.x == v.x && m.y == v.y)) return false;
     return connectSplit(cell, u, m, out, depth + 1) && connectSplit(cell, m, v, out, depth + 1);
@@ -155,18 +291,18 @@ public:
   bool connectGates(int cell, PointD u, PointD v, std::vector<PathSegment>& out) const {
     std::vector<double> xs;
     for (bool top : {true, false})
-      for (const SidePiece& p : cells_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x)))
+      for (const SidePiece& p : regions_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x)))
         for (double x : {p.x0, p.x1})
           if (x > std::min(u.x, v.x) && x < std::max(u.x, v.x)) xs.push_back(x);
     std::sort(xs.begin(), xs.end());
     xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
     if (v.x < u.x) std::reverse(xs.begin(), xs.end());
-    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const Extent c = extent(cell);
     const double eps = 1e-7 * (c.xmax - c.xmin);
     PointD at = u;
     for (double x : xs) {
       double l1, h1, l2, h2;
-      if (!cells_.interval(cell, x - eps, l1, h1) || !cells_.interval(cell, x + eps, l2, h2)) continue;
+      if (!regions_.interval(cell, x - eps, l1, h1) || !regions_.interval(cell, x + eps, l2, h2)) continue;
       const double glo = std::max(l1, l2), ghi = std::min(h1, h2);
       if (glo > ghi) return false;
       const double m = std::min(r_ / 100, (ghi - glo) / 4);
@@ -211,10 +347,10 @@ public:
   /// inside the middle of the interval.
   bool laneEnd(int cell, double x, bool bottom, PointD& out) const {
     double lo, hi;
-    if (!cells_.interval(cell, x, lo, hi)) return false;
+    if (!regions_.interval(cell, x, lo, hi)) return false;
     const double t = tau(lo, hi), mid = (lo + hi) / 2;
     out = {x, bottom ? lo + t : hi - t};
-    for (const SidePiece& p : cells_.side(cell, !bottom, x, x)) {
+    for (const SidePiece& p : regions_.side(cell, !bottom, x, x)) {
       PointD q;
       if (x < p.x0 || x > p.x1 || !offsetAt(p, x, !bottom, t, q)) continue;
       if (bottom ? (q.y >= lo && q.y <= mid) : (q.y <= hi && q.y >= mid)) out = q;
@@ -237,10 +373,10 @@ public:
 
   /// The lanes of a cell, left to right (boustrophedon.h): their x.
   std::vector<double> lanes(int cell) const {
-    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const Extent c = extent(cell);
     const double w = c.xmax - c.xmin;
     double lo, hi;
-    const double t = cells_.interval(cell, (c.xmin + c.xmax) / 2, lo, hi) ? std::min(r_ / 100, w / 4) : 0;
+    const double t = regions_.interval(cell, (c.xmin + c.xmax) / 2, lo, hi) ? std::min(r_ / 100, w / 4) : 0;
     const bool leftWall = wallEnd(cell, c.xmin), rightWall = wallEnd(cell, c.xmax);
     const double A = (leftWall ? 0.5 : 0) + (rightWall ? 0.5 : 0);
     const double span = w - t * ((leftWall ? 0 : 1) + (rightWall ? 0 : 1));
@@ -258,11 +394,11 @@ public:
 
   /// A reference point of a cell: the middle of its interval at the middle of its extent.
   PointD reference(int cell) const {
-    const DecomposedCell& c = cells_.cells[static_cast<std::size_t>(cell)];
+    const Extent c = extent(cell);
     const double x = (c.xmin + c.xmax) / 2;
     double lo, hi;
-    if (cells_.interval(cell, x, lo, hi)) return {x, (lo + hi) / 2};
-    return {x, (c.ymin + c.ymax) / 2};
+    if (regions_.interval(cell, x, lo, hi)) return {x, (lo + hi) / 2};
+    return {x, regions_.ymid(cell)};
   }
 
   /// The middle of the longest wall between a and b.
@@ -273,6 +409,11 @@ public:
   }
 
   std::size_t checks() const { return checks_; }
+
+  struct Extent {
+    double xmin, xmax;
+  };
+  Extent extent(int k) const { return {regions_.xmin(k), regions_.xmax(k)}; }
 
   /// A transition made of line segments, pulled straight: from each point, the farthest later
   /// point of the route that a clear segment reaches (checked exactly), and on from there. Fewer
@@ -300,7 +441,7 @@ private:
   /// The cell's end at x is (almost) all wall: its neighbour's lanes sweep beside it.
   bool wallEnd(int cell, double x) const {
     double lo, hi;
-    if (!cells_.interval(cell, x, lo, hi) || hi <= lo) return false;
+    if (!regions_.interval(cell, x, lo, hi) || hi <= lo) return false;
     double walls = 0;
     for (const CellWall* w : wallsOf_[static_cast<std::size_t>(cell)])
       if (w->vertical && std::abs(w->at - x) <= 1e-9 * (1 + std::abs(x))) walls += w->length();
@@ -310,14 +451,14 @@ private:
   bool hugAlong(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out) const {
     double lo, hi;
     const double dir = v.x >= u.x ? 1 : -1;
-    std::vector<SidePiece> pieces = cells_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x));
+    std::vector<SidePiece> pieces = regions_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x));
     if (dir < 0) std::reverse(pieces.begin(), pieces.end());
     PointD cur = u;
     for (const SidePiece& p : pieces) {
       const double xs = dir > 0 ? std::max(p.x0, u.x) : std::min(p.x1, u.x);
       const double xe = dir > 0 ? std::min(p.x1, v.x) : std::max(p.x0, v.x);
       if ((xe - xs) * dir <= 0) continue;
-      if (!cells_.interval(cell, (xs + xe) / 2, lo, hi)) return false;
+      if (!regions_.interval(cell, (xs + xe) / 2, lo, hi)) return false;
       const double t = tau(lo, hi);
       const PointD start = offsetOf(p, {xs, p.yAt(xs)}, top, t);
       const bool last = xe == v.x;
@@ -346,7 +487,8 @@ private:
     return hugChords(cell, u, m, top, out, depth + 1) && hugChords(cell, m, v, top, out, depth + 1);
   }
 
-  const CellDecomposition& cells_;
+  const Regions& regions_;
+  const Walker* cellLevel_ = nullptr;
   const CSpace& space_;
   double r_;
   std::map<std::pair<int, int>, const CellWall*> longest_;
@@ -354,7 +496,7 @@ private:
   mutable std::size_t checks_ = 0;
 };
 
-FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std::string& decomposition, double degrees,
+FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std::string& decomposition, double degrees, bool chain,
                         const TerminationCondition& stop) {
   FramePlan fp;
   const double r = problem.robots[0].radius.get_d();
@@ -401,18 +543,28 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     fp.message = "the start is not in C-free (the disc there meets an obstacle or the workspace's boundary)";
     return fp;
   }
-  Walker walk(d, r);
-  const std::size_t n = cells.cells.size();
-  std::vector<PointD> ref(n);
-  for (std::size_t c = 0; c < n; ++c) ref[c] = walk.reference(static_cast<int>(c));
-  std::vector<graph::WeightedEdge> edges;
-  for (const CellWall& w : cells.walls) {
-    const PointD door = walk.door(w.a, w.b);
-    edges.push_back({w.a, w.b, dist(ref[static_cast<std::size_t>(w.a)], door) + dist(door, ref[static_cast<std::size_t>(w.b)])});
-  }
-  const graph::CellGraph g(static_cast<int>(n), edges);
+  const Regions regions(cells, chain), single(cells, false);
+  Walker walk(d, regions, r), cellWalk(d, single, r);
+  if (chain) walk.setCellLevel(&cellWalk);
+  const std::size_t n = static_cast<std::size_t>(regions.count());
+  fp.stats["sweep_regions"] = static_cast<double>(n);
+  // the graph of the regions (the order of the sweeps) and of the cells (the transitions)
+  auto graphOf = [](const Walker& w, int count) {
+    std::vector<PointD> ref(static_cast<std::size_t>(count));
+    for (int k = 0; k < count; ++k) ref[static_cast<std::size_t>(k)] = w.reference(k);
+    std::vector<graph::WeightedEdge> edges;
+    for (const auto& [a, b] : w.neighbours()) {
+      const PointD door = w.door(a, b);
+      edges.push_back({a, b, dist(ref[static_cast<std::size_t>(a)], door) + dist(door, ref[static_cast<std::size_t>(b)])});
+    }
+    return graph::CellGraph(count, edges);
+  };
+  const graph::CellGraph g = graphOf(walk, regions.count());
+  const graph::CellGraph gCells = graphOf(cellWalk, single.count());
+  const int startCellIndex = startCell;
+  startCell = regions.of(startCell);   // from here on, regions
 
-  // order: DFS of the cell graph, then 2-opt on shortest-path distances
+  // order: DFS of the region graph, then 2-opt on shortest-path distances
   std::vector<int> order = g.depthFirstOrder(startCell);
   if (order.size() > 2 && order.size() <= 400) {
     std::map<int, std::vector<double>> distFrom;
@@ -473,16 +625,21 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     auto end = [&](std::size_t i, bool bottom) { return bottom ? lanes[i].first : lanes[i].second; };
     const PointD first = end(0, bottomFirst);
     // get there: through the cells of a shortest path of the cell graph
+    // get there: through the cells of a shortest path of the cell graph, from the cell the robot
+    // is in (one of the region it swept last) to the one of `first`
     auto routeFrom = [&](PointD at, std::vector<PathSegment>& route) {
-      if (here == cell) return walk.connect(cell, at, first, route);
-      const std::vector<int> via = g.shortestPath(here, cell);
+      const int fromIndex = walk.memberIndexAt(here, at), toIndex = walk.memberIndexAt(cell, first);
+      if (fromIndex < 0 || toIndex < 0) return false;
+      const int from = regions.cells(here)[static_cast<std::size_t>(fromIndex)], to = regions.cells(cell)[static_cast<std::size_t>(toIndex)];
+      if (from == to) return cellWalk.connect(from, at, first, route);
+      const std::vector<int> via = gCells.shortestPath(from, to);
       if (via.empty()) return false;
       for (std::size_t k = 0; k + 1 < via.size(); ++k) {
-        const PointD door = walk.door(via[k], via[k + 1]);
-        if (!walk.connect(via[k], at, door, route)) return false;
+        const PointD door = cellWalk.door(via[k], via[k + 1]);
+        if (!cellWalk.connect(via[k], at, door, route)) return false;
         at = door;
       }
-      return walk.connect(cell, at, first, route);
+      return cellWalk.connect(to, at, first, route);
     };
     std::vector<PathSegment> route;
     const std::size_t mark0 = segs.size();
@@ -502,8 +659,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       if (reached) route.insert(route.end(), onward.begin(), onward.end());
     }
     if (!reached) {
-      ++skipped;
-      ++unreached;
+      skipped += regions.cells(cell).size();
+      unreached += regions.cells(cell).size();
       continue;
     }
     walk.shortcut(route);
@@ -530,7 +687,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
     phaseTurns["turns_last_side"] += turnsIn(segs, mark, segs.size());
     if (!ok) ++broken;
-    if (!ok) ++skipped;   // what was swept before the break stays; the cell counts as not done
+    if (!ok) skipped += regions.cells(cell).size();   // what was swept before the break stays; its cells count as not done
     here = cell;
   }
   // back to the workspace's frame; the start exactly as given (as a double)
@@ -553,21 +710,29 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   fp.stats["skipped_cells"] = static_cast<double>(skipped);
   fp.stats["cells_unreached"] = static_cast<double>(unreached);
   fp.stats["sweeps_broken"] = static_cast<double>(broken);
-  fp.stats["cells_in_component"] = static_cast<double>(order.size());
+  std::size_t inComponent = 0;
+  for (int k : order) inComponent += regions.cells(k).size();
+  fp.stats["cells_in_component"] = static_cast<double>(inComponent);
   fp.stats["exact_checks"] = static_cast<double>(walk.checks());
   // components of the plan's C-free joined to the start's only where C-free is pinched to zero
   // width (a gap exactly 2r wide, boustrophedon.h): counted, not crossed
   std::size_t behind = 0;
   double behindArea = 0;
   if (d.space->componentCount() > 1) {
-    const int home = cells.cells[static_cast<std::size_t>(startCell)].component;
+    const int home = cells.cells[static_cast<std::size_t>(startCellIndex)].component;
     const int closedHome = d.space->closedComponentOf(startFrame);
     std::map<int, bool> joined;
     for (std::size_t c = 0; c < n; ++c) {
       const int k = cells.cells[c].component;
       if (k == home) continue;
       auto it = joined.find(k);
-      if (it == joined.end()) it = joined.emplace(k, closedHome >= 0 && d.space->closedComponentOf(exactOf(ref[c])) == closedHome).first;
+      if (it == joined.end()) {
+        const DecomposedCell& cell = cells.cells[c];
+        const double x = (cell.xmin + cell.xmax) / 2;
+        double lo, hi;
+        const PointD mid = cells.interval(static_cast<int>(c), x, lo, hi) ? PointD{x, (lo + hi) / 2} : PointD{x, (cell.ymin + cell.ymax) / 2};
+        it = joined.emplace(k, closedHome >= 0 && d.space->closedComponentOf(exactOf(mid)) == closedHome).first;
+      }
       if (it->second) behindArea += cells.cells[c].area;
       behind += it->second;
     }
@@ -627,6 +792,9 @@ std::string BoustrophedonPlanner::description() const {
 
 std::vector<ParamSpec> BoustrophedonPlanner::params() const {
   return {{"decomposition", ParamType::kChoice, "boustrophedon", "boustrophedon|trapezoidal", "the decomposition whose cells are swept"},
+          {"chains", ParamType::kBool, "true", "true|false",
+           "sweep chains of cells joined through vertical walls as one region (one entry, lanes across the walls); false: "
+           "every cell on its own, as in the paper"},
           {"direction", ParamType::kDouble, "0", "-360:360|best",
            "sweep direction in degrees (lanes perpendicular to it), or best: the workspace's main edge directions, 0 and 90 "
            "tried, the least length + r x turning kept"}};
@@ -661,7 +829,7 @@ Plan BoustrophedonPlanner::plan(const PlanningContext& ctx, const ParamSet& para
   FramePlan best;
   double cspace = 0, decompose = 0, sweep = 0;
   for (double deg : directions) {
-    FramePlan fp = planDirection(problem, rPlan, params.text("decomposition"), deg, stop);
+    FramePlan fp = planDirection(problem, rPlan, params.text("decomposition"), deg, params.flag("chains"), stop);
     cspace += fp.cspaceSeconds;
     decompose += fp.decomposeSeconds;
     sweep += fp.planSeconds;

@@ -64,6 +64,23 @@ TEST(Boustrophedon, FollowsArcsAndIsDeterministic) {
   EXPECT_EQ(testing_helpers::pathJsonOf(a), testing_helpers::pathJsonOf(planners::runPlanner("boustrophedon", ctx, {})));
 }
 
+TEST(Boustrophedon, ChainsSweepSeveralCellsAsOneRegion) {
+  for (std::uint64_t seed : {2u, 9u}) {
+    const auto ctx = testing_helpers::contextFor(seeded(seed, 9, datasets::ObstacleShape::kMixed), Rational(1, 4));
+    const Plan chained = planners::runPlanner("boustrophedon", ctx, {});
+    const Plan single = planners::runPlanner("boustrophedon", ctx, {{"chains", "false"}});
+    for (const Plan* p : {&chained, &single}) {
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, *p));
+      EXPECT_EQ(p->status, PlanStatus::kExactSolution) << p->message;
+      EXPECT_TRUE(testing_helpers::coversCFreeComponent(ctx, *p, 0.97));
+    }
+    EXPECT_EQ(single.statistics.at("sweep_regions"), single.statistics.at("cells"));
+    EXPECT_LT(chained.statistics.at("sweep_regions"), chained.statistics.at("cells"));
+    EXPECT_EQ(chained.statistics.at("cells_in_component"), single.statistics.at("cells_in_component"));
+    EXPECT_LE(chained.statistics.at("lanes"), single.statistics.at("lanes"));
+  }
+}
+
 TEST(Boustrophedon, ItsTurnsPerPhaseAddUpToTheTurnsOfThePath) {
   for (const int deg : {0, 30}) {
     const auto ctx = testing_helpers::contextFor(seeded(3, 8, datasets::ObstacleShape::kMixed), Rational(1, 4));
