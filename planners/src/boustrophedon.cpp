@@ -722,7 +722,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     const int home = cells.cells[static_cast<std::size_t>(startCellIndex)].component;
     const int closedHome = d.space->closedComponentOf(startFrame);
     std::map<int, bool> joined;
-    for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t c = 0; c < cells.cells.size(); ++c) {
       const int k = cells.cells[c].component;
       if (k == home) continue;
       auto it = joined.find(k);

@@ -115,15 +115,23 @@ TEST(Boustrophedon, ReportsWhatLiesBehindAGapExactly2rWide) {
   // two obstacles leave a gap exactly 2r = 1 wide (y from 1.5 to 2.5) between the halves of the box
   const Workspace w = testing_helpers::boxWith(
       {{{ratio(9, 2), ratio(1, 2)}, {ratio(11, 2), ratio(1, 2)}, {ratio(11, 2), ratio(3, 2)}, {ratio(9, 2), ratio(3, 2)}},
-       {{ratio(9, 2), ratio(5, 2)}, {ratio(11, 2), ratio(5, 2)}, {ratio(11, 2), ratio(7, 2)}, {ratio(9, 2), ratio(7, 2)}}},
+       {{ratio(9, 2), ratio(5, 2)}, {ratio(11, 2), ratio(5, 2)}, {ratio(11, 2), ratio(7, 2)}, {ratio(9, 2), ratio(7, 2)}},
+       // a post on the start's side: cells that chains join, so that regions are fewer than cells
+       {{ratio(5, 2), ratio(19, 10)}, {ratio(27, 10), ratio(19, 10)}, {ratio(27, 10), ratio(21, 10)}, {ratio(5, 2), ratio(21, 10)}}},
       10, 4);
   const auto ctx = testing_helpers::contextFor(w, Rational(1, 2), Point{1, 2});
-  const Plan plan = planners::runPlanner("boustrophedon", ctx, {});
-  ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
-  EXPECT_EQ(plan.status, PlanStatus::kPartialCoverage);
-  EXPECT_GT(plan.statistics.at("cells_behind_exact_gaps"), 0);
-  EXPECT_GT(plan.statistics.at("area_behind_exact_gaps"), 2);
-  for (const PathSegment& s : plan.paths[0].segments) EXPECT_LE(std::max(s.from.x, s.to.x), 5.0);   // stays on its side
+  double area = -1;
+  for (const char* chains : {"true", "false"}) {   // the cells behind, whatever the regions swept
+    const Plan plan = planners::runPlanner("boustrophedon", ctx, {{"chains", chains}});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+    EXPECT_EQ(plan.status, PlanStatus::kPartialCoverage);
+    EXPECT_GT(plan.statistics.at("cells_behind_exact_gaps"), 0);
+    EXPECT_GT(plan.statistics.at("area_behind_exact_gaps"), 2);
+    if (area >= 0) EXPECT_EQ(plan.statistics.at("area_behind_exact_gaps"), area);
+    if (std::string(chains) == "true") EXPECT_LT(plan.statistics.at("sweep_regions"), plan.statistics.at("cells"));
+    area = plan.statistics.at("area_behind_exact_gaps");
+    for (const PathSegment& s : plan.paths[0].segments) EXPECT_LE(std::max(s.from.x, s.to.x), 5.0);   // stays on its side
+  }
 }
 
 // Transitions between cells whose shared walls lie on one vertical line with an obstacle's side
