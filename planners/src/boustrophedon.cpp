@@ -132,10 +132,12 @@ public:
   /// The region's interval at x: of the member cell there, or the union of the two that meet at x.
   bool interval(int k, double x, double& lo, double& hi) const {
     bool any = false;
-    for (int c : cells(k)) {
-      const DecomposedCell& cell = d_.cells[static_cast<std::size_t>(c)];
+    lo = hi = 0;
+    const auto [first, last] = membersOver(k, x, x);
+    for (std::size_t q = first; q < last; ++q) {
+      const int c = cells(k)[q];
       double l, h;
-      if (x < cell.xmin || x > cell.xmax || !d_.interval(c, x, l, h)) continue;
+      if (!d_.interval(c, x, l, h)) continue;
       lo = any ? std::min(lo, l) : l;
       hi = any ? std::max(hi, h) : h;
       any = true;
@@ -146,16 +148,28 @@ public:
   /// The top (or bottom) of the region over [x0, x1]: the member cells' sides in x order.
   std::vector<SidePiece> side(int k, bool top, double x0, double x1) const {
     std::vector<SidePiece> out;
-    for (int c : cells(k)) {
+    const auto [first, last] = membersOver(k, x0, x1);
+    for (std::size_t q = first; q < last; ++q) {
+      const int c = cells(k)[q];
       const DecomposedCell& cell = d_.cells[static_cast<std::size_t>(c)];
-      const double a = std::max(x0, cell.xmin), b = std::min(x1, cell.xmax);
-      if (a > b) continue;
-      for (const SidePiece& piece : d_.side(c, top, a, b)) out.push_back(piece);
+      for (const SidePiece& piece : d_.side(c, top, std::max(x0, cell.xmin), std::min(x1, cell.xmax))) out.push_back(piece);
     }
     return out;
   }
 
 private:
+  /// The members whose [xmin, xmax] meets [x0, x1], as an index range: a chain's cells follow each
+  /// other left to right, each beginning where the one before ends (binary search on xmax).
+  std::pair<std::size_t, std::size_t> membersOver(int k, double x0, double x1) const {
+    const std::vector<int>& m = cells(k);
+    auto xmaxOf = [&](int c) { return d_.cells[static_cast<std::size_t>(c)].xmax; };
+    auto xminOf = [&](int c) { return d_.cells[static_cast<std::size_t>(c)].xmin; };
+    std::size_t first = static_cast<std::size_t>(std::lower_bound(m.begin(), m.end(), x0, [&](int c, double x) { return xmaxOf(c) < x; }) - m.begin());
+    std::size_t last = first;
+    while (last < m.size() && xminOf(m[last]) <= x1) ++last;
+    return {first, last};
+  }
+
   const CellDecomposition& d_;
   std::vector<int> of_;
   std::vector<std::vector<int>> members_;
