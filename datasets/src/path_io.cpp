@@ -47,12 +47,13 @@ std::vector<PointD> pointsOf(const std::string& file, const PathDocument& doc, s
                      "this arc keeps clearance r, but no lines found to replace it do; write the path as .json");
   return std::move(s.points);
 }
-std::string ext(const std::string& f) {
-  std::string e = fs::path(f).extension().string();
+}  // namespace
+
+std::string extensionOf(const std::string& file) {
+  std::string e = fs::path(file).extension().string();
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return e;
 }
-}  // namespace
 
 std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
   std::vector<std::pair<std::string, double>> f = {{"subcell_coverage", m.subcellCoverage},
@@ -153,7 +154,7 @@ mode_t fileMode() {
 void checkOutputFile(const std::string& file, const std::string& option, const std::vector<std::string>& extensions) {
   if (file.empty()) throw InputError(option, "", "no file name given");
   if (!extensions.empty()) {
-    const std::string e = ext(file);
+    const std::string e = extensionOf(file);
     if (std::find(extensions.begin(), extensions.end(), e) == extensions.end()) {
       std::string known;
       for (std::size_t i = 0; i < extensions.size(); ++i) known += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + extensions[i];
@@ -329,7 +330,7 @@ std::string pathJson(const PathDocument& doc) {
 }
 
 std::string pathFileContent(const std::string& file, const PathDocument& doc) {
-  const std::string e = ext(file);
+  const std::string e = extensionOf(file);
   std::ostringstream os;
   os.precision(17);
   if (e == ".json") {
@@ -371,7 +372,7 @@ json regionJson(const CurveRegion& r) {
 }
 
 std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc) {
-  const std::string e = ext(file);
+  const std::string e = extensionOf(file);
   auto regions = [](const std::vector<CurveRegion>& rs) {
     json out = json::array();
     for (const CurveRegion& r : rs) out.push_back(regionJson(r));
@@ -424,7 +425,7 @@ std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc
 }
 
 std::string cellsFileContent(const std::string& file, const CellsDocument& doc) {
-  const std::string e = ext(file);
+  const std::string e = extensionOf(file);
   if (e == ".json") {
     json cells = json::array();
     for (std::size_t i = 0; i < doc.cells.size(); ++i) {
@@ -654,7 +655,7 @@ private:
 
 PathDocument readPathFile(const std::string& file) {
   const std::string text = readTextFile(file);
-  if (ext(file) == ".csv") return readPathCsv(file, text);
+  if (extensionOf(file) == ".csv") return readPathCsv(file, text);
   json j;
   try {
     j = json::parse(text);

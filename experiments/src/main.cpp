@@ -391,9 +391,7 @@ int main(int argc, char** argv) {
       const planners::Decomposed dec = planners::runDecomposition(method, problem, kv);
       if (dec.cells.cells.empty())
         throw InputError("--radius", radius, "C-free is empty: a disc of this radius fits nowhere in " + map + " (no cells)");
-      std::string outExt = fs::path(out).extension().string();
-      for (char& ch : outExt) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-      const datasets::CellsDocument doc = experiments::cellsDocument(map, method, kv, problem, dec, outExt == ".geojson");
+      const datasets::CellsDocument doc = experiments::cellsDocument(map, method, kv, problem, dec, datasets::extensionOf(out) == ".geojson");
       std::vector<CurveRegion> regions;
       for (const auto& c : doc.cells) regions.push_back(c.region);
       progress.step("writing");

@@ -8,16 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 namespace coverkit::experiments {
 
 namespace {
-std::string extOf(const std::string& f) {
-  std::string e = std::filesystem::path(f).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
 
 cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned int length) {
   static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
@@ -26,7 +20,7 @@ cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned in
 }  // namespace
 
 void checkPictureName(const std::string& file, const std::string& option) {
-  const std::string e = extOf(file);
+  const std::string e = datasets::extensionOf(file);
   if (e != ".png" && e != ".svg") throw InputError(file, option, "unknown picture format '" + e + "' (expected .png or .svg)");
 }
 
@@ -49,7 +43,7 @@ std::string pictureBytes(const std::string& file, const PictureContent& c) {
   const int margin = 10, titleH = c.title.empty() ? 0 : 22;
   const int W = static_cast<int>(std::ceil(w * scale)) + 2 * margin, H = static_cast<int>(std::ceil(h * scale)) + 2 * margin + titleH;
   std::string bytes;
-  const bool svg = extOf(file) == ".svg";
+  const bool svg = datasets::extensionOf(file) == ".svg";
   cairo_surface_t* surface = svg ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, W, H) : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);

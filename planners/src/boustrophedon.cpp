@@ -21,20 +21,22 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 double dist(PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); }
 Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
+/// The heading of a piece at its start or end (radians).
+double heading(const PathSegment& s, bool atEnd) {
+  if (s.kind == PathSegment::Kind::kLine) return std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
+  const PointD p = atEnd ? s.to : s.from;
+  const double a = std::atan2(p.y - s.center.y, p.x - s.center.x);
+  return a + (s.ccw ? M_PI / 2 : -M_PI / 2);
+}
+double wrapAngle(double a) { return std::remainder(a, 2 * M_PI); }
+
 /// Total turning of a path (radians): heading changes at joints and along arcs.
 double turning(const Path& path) {
   double t = 0;
-  auto heading = [](const PathSegment& s, bool atEnd) {
-    if (s.kind == PathSegment::Kind::kLine) return std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
-    const PointD p = atEnd ? s.to : s.from;
-    const double a = std::atan2(p.y - s.center.y, p.x - s.center.x);
-    return a + (s.ccw ? M_PI / 2 : -M_PI / 2);
-  };
-  auto wrap = [](double a) { return std::remainder(a, 2 * M_PI); };
   for (std::size_t i = 0; i < path.segments.size(); ++i) {
     const PathSegment& s = path.segments[i];
-    if (s.kind == PathSegment::Kind::kArc) t += std::abs(wrap(heading(s, true) - heading(s, false)));
-    if (i > 0) t += std::abs(wrap(heading(s, false) - heading(path.segments[i - 1], true)));
+    if (s.kind == PathSegment::Kind::kArc) t += std::abs(wrapAngle(heading(s, true) - heading(s, false)));
+    if (i > 0) t += std::abs(wrapAngle(heading(s, false) - heading(path.segments[i - 1], true)));
   }
   return t;
 }
@@ -42,21 +44,12 @@ double turning(const Path& path) {
 /// Heading changes above 1° (geometry/metrics.h) at the joints of segs[from, to) and where
 /// segs[from] meets the segment before it.
 double turnsIn(const std::vector<PathSegment>& segs, std::size_t from, std::size_t to) {
-  auto headings = [](const PathSegment& s) {
-    if (s.kind == PathSegment::Kind::kLine) {
-      const double h = std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
-      return std::pair{h, h};
-    }
-    const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x), a1 = std::atan2(s.to.y - s.center.y, s.to.x - s.center.x);
-    const double q = s.ccw ? M_PI / 2 : -M_PI / 2;
-    return std::pair{a0 + q, a1 + q};
-  };
   double n = 0;
   const PathSegment* prev = nullptr;
   for (std::size_t i = from > 0 ? from - 1 : 0; i < to; ++i) {
     const PathSegment& s = segs[i];
     if (s.kind == PathSegment::Kind::kLine && s.from.x == s.to.x && s.from.y == s.to.y) continue;
-    if (prev && std::abs(std::remainder(headings(s).first - headings(*prev).second, 2 * M_PI)) > M_PI / 180) ++n;
+    if (prev && std::abs(wrapAngle(heading(s, false) - heading(*prev, true))) > M_PI / 180) ++n;
     prev = &s;
   }
   return n;
@@ -195,31 +188,37 @@ public:
   /// may never clear a corner.
   void setCellLevel(const Walker* cells) { cellLevel_ = cells; }
 
-  /// From u to v in a region of several cells: through the member cells between theirs, from
-  /// wall to wall (the middle of each), each piece inside one cell.
+  /// From u to v in a region of several cells: through the member cells between theirs.
   bool connectMembers(int k, PointD u, PointD v, std::vector<PathSegment>& out) const {
     const std::vector<int>& m = regions_.cells(k);
-    const int i = memberAt(k, u), j = memberAt(k, v);
+    const int i = memberIndexAt(k, u), j = memberIndexAt(k, v);
     if (i < 0 || j < 0) return false;
-    PointD at = u;
-    const int step = j >= i ? 1 : -1;
-    for (int q = i; q != j; q += step) {
-      const PointD door = cellLevel_->door(m[static_cast<std::size_t>(q)], m[static_cast<std::size_t>(q + step)]);
-      if (!cellLevel_->connect(m[static_cast<std::size_t>(q)], at, door, out)) return false;
-      at = door;
+    std::vector<int> via;
+    for (int q = i;; q += j >= i ? 1 : -1) {
+      via.push_back(m[static_cast<std::size_t>(q)]);
+      if (q == j) break;
     }
-    return cellLevel_->connect(m[static_cast<std::size_t>(j)], at, v, out);
+    return cellLevel_->throughCells(via, u, v, out);
+  }
+
+  /// From u (in cells.front()) to v (in cells.back()) through consecutive neighbouring regions,
+  /// from the middle of one shared wall to the next, each piece inside one region.
+  bool throughCells(const std::vector<int>& cells, PointD u, PointD v, std::vector<PathSegment>& out) const {
+    PointD at = u;
+    for (std::size_t q = 0; q + 1 < cells.size(); ++q) {
+      const PointD next = door(cells[q], cells[q + 1]);
+      if (!connect(cells[q], at, next, out)) return false;
+      at = next;
+    }
+    return connect(cells.back(), at, v, out);
   }
 
   /// The index (in the region's list) of a member cell holding p (the only one of a region of
   /// one cell), or −1.
   int memberIndexAt(int k, PointD p) const {
-    if (regions_.cells(k).size() == 1) return 0;
-    return cellLevel_ ? memberAt(k, p) : -1;
-  }
-
-  int memberAt(int k, PointD p) const {
     const std::vector<int>& m = regions_.cells(k);
+    if (m.size() == 1) return 0;
+    if (!cellLevel_) return -1;
     const double tol = 1e-9 * (1 + std::abs(p.x) + std::abs(p.y));
     for (std::size_t q = 0; q < m.size(); ++q) {
       double lo, hi;
@@ -638,22 +637,14 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     if (fromRight) std::reverse(lanes.begin(), lanes.end());
     auto end = [&](std::size_t i, bool bottom) { return bottom ? lanes[i].first : lanes[i].second; };
     const PointD first = end(0, bottomFirst);
-    // get there: through the cells of a shortest path of the cell graph
     // get there: through the cells of a shortest path of the cell graph, from the cell the robot
     // is in (one of the region it swept last) to the one of `first`
     auto routeFrom = [&](PointD at, std::vector<PathSegment>& route) {
       const int fromIndex = walk.memberIndexAt(here, at), toIndex = walk.memberIndexAt(cell, first);
       if (fromIndex < 0 || toIndex < 0) return false;
       const int from = regions.cells(here)[static_cast<std::size_t>(fromIndex)], to = regions.cells(cell)[static_cast<std::size_t>(toIndex)];
-      if (from == to) return cellWalk.connect(from, at, first, route);
-      const std::vector<int> via = gCells.shortestPath(from, to);
-      if (via.empty()) return false;
-      for (std::size_t k = 0; k + 1 < via.size(); ++k) {
-        const PointD door = cellWalk.door(via[k], via[k + 1]);
-        if (!cellWalk.connect(via[k], at, door, route)) return false;
-        at = door;
-      }
-      return cellWalk.connect(to, at, first, route);
+      const std::vector<int> via = from == to ? std::vector<int>{from} : gCells.shortestPath(from, to);
+      return !via.empty() && cellWalk.throughCells(via, at, first, route);
     };
     std::vector<PathSegment> route;
     const std::size_t mark0 = segs.size();
@@ -740,13 +731,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       const int k = cells.cells[c].component;
       if (k == home) continue;
       auto it = joined.find(k);
-      if (it == joined.end()) {
-        const DecomposedCell& cell = cells.cells[c];
-        const double x = (cell.xmin + cell.xmax) / 2;
-        double lo, hi;
-        const PointD mid = cells.interval(static_cast<int>(c), x, lo, hi) ? PointD{x, (lo + hi) / 2} : PointD{x, (cell.ymin + cell.ymax) / 2};
-        it = joined.emplace(k, closedHome >= 0 && d.space->closedComponentOf(exactOf(mid)) == closedHome).first;
-      }
+      if (it == joined.end())
+        it = joined.emplace(k, closedHome >= 0 && d.space->closedComponentOf(exactOf(cellWalk.reference(static_cast<int>(c)))) == closedHome).first;
       if (it->second) behindArea += cells.cells[c].area;
       behind += it->second;
     }

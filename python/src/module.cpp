@@ -139,11 +139,14 @@ struct PyPlan {
   std::shared_ptr<const planners::PlanningContext> context;   ///< none for a plan read from a file
   std::vector<std::pair<PointD, PointD>> tree;
 
-  std::string content(const std::string& extension) const {
+  /// The path document with the workspace it was planned in, for the writers (arcs sampled on
+  /// their checked safe side in CSV and GeoJSON).
+  datasets::PathDocument document() const {
     datasets::PathDocument d = doc;
     d.workspace = context ? &context->problem.workspace : nullptr;
-    return datasets::pathFileContent("plan" + extension, d);
+    return d;
   }
+  std::string content(const std::string& extension) const { return datasets::pathFileContent("plan" + extension, document()); }
 };
 
 /// Paths given as (n, 2) arrays of float64 (polylines), or a Plan's paths.
@@ -214,6 +217,22 @@ py::list paramList(const std::vector<planners::ParamSpec>& specs) {
     q["range"] = s.range;
     q["help"] = s.help;
     out.append(q);
+  }
+  return out;
+}
+
+/// Every entry of a registry: name, description, parameters, and what `more` adds.
+template <class Registry, class More>
+py::list describe(const Registry& registry, More more) {
+  py::list out;
+  for (const std::string& name : registry.names()) {
+    const auto entry = registry.create(name);
+    py::dict d;
+    d["name"] = name;
+    d["description"] = entry->description();
+    d["parameters"] = paramList(entry->params());
+    more(*entry, d);
+    out.append(d);
   }
   return out;
 }
@@ -360,9 +379,7 @@ PYBIND11_MODULE(_coverkit, m) {
       .def("to_csv", [](const PyPlan& p) { return p.content(".csv"); })
       .def("write", [](const PyPlan& p, const std::string& file) {
             datasets::checkOutputFile(file, "file", {".json", ".csv", ".geojson"});
-            std::string ext = file.substr(file.rfind('.'));
-            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            datasets::writeFileAtomically(file, p.content(ext));
+            datasets::writePathFile(file, p.document());
           }, py::arg("file"), "Writes the path file by extension (.json, .csv, .geojson), all or nothing.")
       .def("picture", [](const PyPlan& p, const std::string& file, const std::shared_ptr<Workspace>& w, const std::string& title) {
             experiments::checkPictureOutput(file, "file");
@@ -388,39 +405,18 @@ PYBIND11_MODULE(_coverkit, m) {
           });
 
   m.def("_planners", [] {
-        py::list out;
-        auto& reg = planners::Registry::instance();
-        for (const std::string& name : reg.names()) {
-          const auto planner = reg.create(name);
-          py::dict d;
-          d["name"] = name;
-          d["description"] = planner->description();
-          d["parameters"] = paramList(planner->params());
-          const planners::Capabilities c = planner->capabilities();
-          py::dict caps;
-          caps["online"] = c.online;
-          caps["multi_robot"] = c.multiRobot;
-          caps["needs_cells"] = c.needsCells;
-          caps["output"] = c.output;
-          caps["coverage"] = c.coverage;
-          d["capabilities"] = caps;
-          out.append(d);
-        }
-        return out;
-      });
-  m.def("_decompositions", [] {
-        py::list out;
-        auto& reg = planners::DecompositionRegistry::instance();
-        for (const std::string& name : reg.names()) {
-          const auto d = reg.create(name);
-          py::dict e;
-          e["name"] = name;
-          e["description"] = d->description();
-          e["parameters"] = paramList(d->params());
-          out.append(e);
-        }
-        return out;
-      });
+    return describe(planners::Registry::instance(), [](const planners::Planner& planner, py::dict& d) {
+      const planners::Capabilities c = planner.capabilities();
+      py::dict caps;
+      caps["online"] = c.online;
+      caps["multi_robot"] = c.multiRobot;
+      caps["needs_cells"] = c.needsCells;
+      caps["output"] = c.output;
+      caps["coverage"] = c.coverage;
+      d["capabilities"] = caps;
+    });
+  });
+  m.def("_decompositions", [] { return describe(planners::DecompositionRegistry::instance(), [](const auto&, py::dict&) {}); });
 
   m.def("plan", [](const std::shared_ptr<Workspace>& w, const std::string& planner, const py::object& radius, const py::object& start,
                    const std::optional<py::dict>& params, const py::object& post, const py::object& timeLimit, const py::object& cellSize) {

@@ -92,6 +92,9 @@ std::string cspaceFileContent(const std::string& file, const CSpaceDocument& doc
 /// renamed into place only when it is complete (an OutputBatch of one file).
 void writeFileAtomically(const std::string& file, const std::string& content);
 
+/// The extension of `file` in lower case, with its dot ("" when it has none).
+std::string extensionOf(const std::string& file);
+
 /// Checks, before any work, that `file` can be written: a name is given, its extension (compared
 /// in lower case) is one of `extensions` (with the dot; empty: any), its folder exists, is a folder
 /// and is writable, and `file` itself is not a folder or a special file. InputError(file, option,
