@@ -1,7 +1,8 @@
 // The coverkit command line: plan, evaluate, render, list, demo. Bad input: a message naming the
 // file, the place and the problem on stderr, exit code 2, no output file.
 #include "render.h"
-#include "paper_experiments.h"
+#include "cmd_experiment.h"
+#include "engine.h"
 #include "runner.h"
 
 #include <coverkit/datasets/path_io.h>
@@ -117,136 +118,13 @@ void printEvaluation(const ValidationReport& v, const Metrics& m) {
   std::cout << "  area_method           " << m.areaMethod << "\n";
 }
 
-std::string today() {
-  std::time_t t = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-  return buf;
-}
-
-std::string hostName() {
-  char buf[256] = {0};
-  gethostname(buf, sizeof buf - 1);
-  return buf;
-}
-
-int cmdDemo(const std::string& outDir, const std::string& dataDir, bool quiet) {
-  const fs::path data = dataDir;
-  std::ifstream list(data / "scenarios.txt");
-  if (!list) throw InputError((data / "scenarios.txt").string(), "", "built-in scenario list not found");
-  struct Scenario {
-    std::string name, file, radius;
-  };
-  std::vector<Scenario> scenarios;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(list, line)) {
-    ++lineNo;
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ls(line);
-    Scenario s;
-    if (!(ls >> s.name >> s.file >> s.radius))
-      throw InputError((data / "scenarios.txt").string(), "line " + std::to_string(lineNo), "expected NAME FILE RADIUS");
-    scenarios.push_back(s);
-  }
-  const auto names = planners::Registry::instance().names();
-  {
-    std::vector<std::string> outputs{"results.csv", "report.md", "run.json"};
-    for (const Scenario& s : scenarios) {
-      outputs.push_back(s.name + "_cspace.png");
-      for (const std::string& planner : names) outputs.push_back(s.name + "_" + planner + ".png");
-    }
-    datasets::checkOutputFolder(outDir, "--out", outputs);
-  }
-  datasets::OutputBatch outputs(outDir);
-  Progress progress(scenarios.size() * names.size());
-  std::ostringstream csv, md;
-  csv << "planner,map,seed,params,status,valid,violations";
-  Metrics none;
-  none.hasCoverable = true;  // the demo always measures against the coverable region
-  for (auto& [k, v] : datasets::metricFields(none)) csv << "," << k;
-  csv << ",t_cells,t_graph,t_tree,t_path,t_total\n";
-  md << "# coverkit demo\n\ncoverkit " << COVERKIT_VERSION << " (" << COVERKIT_GIT_REVISION << "), " << today() << ", host " << hostName()
-     << ".\nEvery plan was checked by the independent validator (continuity, exact clearance, start).\n\n"
-     << "| map | planner | status | valid | sub-cell coverage | area coverage | coverable coverage | length | turns | time (s) |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|\n";
-  int invalid = 0;
-  std::ostringstream cspaceMd;
-  for (const Scenario& s : scenarios) {
-    const Problem problem = makeProblem((data / s.file).string(), s.radius, "", false, "");
-    const planners::PlanningContext ctx = planners::makeContext(problem);
-    // the scenario's C-space, built once: the picture, and the coverable region of every plan
-    const CSpace cs(ctx.problem.workspace, ctx.problem.robots[0].radius);
-    MetricOptions metricOptions = experiments::defaultMetricOptions();
-    metricOptions.cspace = &cs;
-    {
-      const std::vector<CurveRegion> cfree = cs.components(), cobs = cs.obstacles();
-      experiments::PictureContent pc;
-      pc.workspace = &ctx.problem.workspace;
-      pc.cfree = &cfree;
-      pc.cobstacles = &cobs;
-      pc.title = s.name + " / C-space, r=" + s.radius + " / " + std::to_string(cfree.size()) + " component(s)";
-      outputs.addInFolder(s.name + "_cspace.png", experiments::pictureBytes(s.name + "_cspace.png", pc));
-      cspaceMd << "### " << s.name << " — C-space\n\nC-free: " << cfree.size() << " component(s), area " << formatDouble(std::round(cs.area() * 1000) / 1000)
-                << " of free area " << formatDouble(std::round(freeArea(ctx.problem.workspace).get_d() * 1000) / 1000) << ".\n\n![" << s.name
-                << " C-space](" << s.name << "_cspace.png)\n\n";
-    }
-    for (const std::string& planner : names) {
-      experiments::RunResult r = experiments::runOnce(ctx, planner, {}, 0, {}, metricOptions);
-      progress.step(s.name + " " + planner);
-      if (!r.validation.valid) ++invalid;
-      std::map<std::string, double> t;
-      for (auto& [k, v] : r.plan.timings) t[k] = v;
-      csv << planner << "," << s.name << ",0,," << toString(r.plan.status) << "," << (r.validation.valid ? "true" : "false") << ","
-          << r.validation.violations.size();
-      Metrics row = r.metrics;
-      row.hasCoverable = true;  // same columns for every row (zeros when the plan failed)
-      for (auto& [k, v] : datasets::metricFields(row)) csv << "," << formatDouble(v);
-      csv << "," << formatDouble(t["cells"]) << "," << formatDouble(t["graph"]) << "," << formatDouble(t["tree"]) << ","
-          << formatDouble(t["path"]) << "," << formatDouble(r.totalSeconds) << "\n";
-      const std::string pic = s.name + "_" + planner + ".png";
-      experiments::PictureContent pc;
-      pc.workspace = &ctx.problem.workspace;
-      pc.cells = &ctx.cells;
-      pc.tree = &r.plan.treeEdges;
-      pc.paths = &r.plan.paths;
-      pc.radius = ctx.problem.robots[0].radius.get_d();
-      pc.title = s.name + " / " + planner + " / r=" + s.radius + " / " + toString(r.plan.status);
-      outputs.addInFolder(pic, experiments::pictureBytes(pic, pc));
-      std::ostringstream cov;
-      cov << std::fixed << std::setprecision(4) << r.metrics.subcellCoverage << " | " << r.metrics.areaCoverage << " (" << r.metrics.areaMethod
-          << ") | " << r.metrics.coverableCoverage << " ± " << std::setprecision(4)
-          << (r.metrics.coverableArea > 0 ? r.metrics.coverableAreaError / r.metrics.coverableArea : 0);
-      md << "| " << s.name << " | " << planner << " | " << toString(r.plan.status) << " | " << (r.validation.valid ? "yes" : "**no**") << " | "
-         << cov.str() << " | " << formatDouble(std::round(r.metrics.length * 1000) / 1000) << " | "
-         << r.metrics.turns << " | " << formatDouble(std::round(r.totalSeconds * 10000) / 10000) << " |\n";
-    }
-  }
-  md << "\n## Pictures\n\nGreen: free sub-cells; orange: partial; dark: obstacles; blue: spanning tree; red: path (faint band: the swept disc).\n\n";
-  for (const Scenario& s : scenarios)
-    for (const std::string& planner : names) md << "### " << s.name << " — " << planner << "\n\n![" << s.name << "](" << s.name << "_" << planner << ".png)\n\n";
-  md << "## C-space\n\nBlue: C-free components (where the disc's centre may be; arcs drawn as arcs); red: C-obstacles "
-        "(obstacles ⊕ disc and the band along the walls).\n\n"
-     << cspaceMd.str();
-  md << "Columns are defined in docs/metrics.md; results.csv holds every metric and per-phase time.\n";
-  outputs.addInFolder("results.csv", csv.str());
-  outputs.addInFolder("report.md", md.str());
-  nlohmann::json meta{{"version", COVERKIT_VERSION}, {"git_revision", COVERKIT_GIT_REVISION}, {"host", hostName()}, {"date", today()},
-                      {"scenarios", scenarios.size()}, {"planners", names}};
-  outputs.addInFolder("run.json", meta.dump(1) + "\n");
-  outputs.commit();
-  if (!quiet)
-    std::cout << "coverkit demo: " << scenarios.size() * names.size() << " plans, " << invalid << " invalid; report: "
-              << (fs::path(outDir) / "report.md").string() << "\n";
-  return invalid == 0 ? 0 : 1;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"coverkit: coverage path planning for disc robots on exact geometry"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string(COVERKIT_VERSION) + " (" + COVERKIT_GIT_REVISION + ")");
+  app.set_version_flag("--version", std::string(COVERKIT_VERSION) + " (" + COVERKIT_GIT_REVISION + ")" +
+                                        (experiments::mpiBuiltIn() ? ", experiments with MPI" : ""));
 
   std::string map, radius, start, out, picture, planner = "stc", pathFile, cellSize;
   std::vector<std::string> params;
@@ -319,26 +197,11 @@ int main(int argc, char** argv) {
   std::string demoOut = "coverkit-demo";
   auto* demo = app.add_subcommand("demo", "plan every built-in scenario with every planner, validate, write a report");
   demo->add_option("--out", demoOut, "output folder (default: coverkit-demo)");
-  std::string dataDir = COVERKIT_DATA_DIR;
-  demo->add_option("--data", dataDir, "folder with scenarios.txt and the maps it names (default: the built-in data)");
+  unsigned demoJobs = 0;
+  demo->add_option("--jobs", demoJobs, "plans run at once; 0, the default: every core")->check(CLI::Range(0u, 1024u));
   demo->add_flag("--quiet", quiet, "no summary line");
 
-  std::string experimentName, experimentOut = "coverkit-experiment";
-  experiments::BsaExperimentOptions bsaOptions;
-  auto* experiment = app.add_subcommand("experiment", "reproduce a paper's experiment: CSV, table, chart (docs/experiments.md)");
-  experiment->add_option("name", experimentName,
-                         "bsa-backtracking, tracc-scenarios, decompositions, coverage-vs-size, coverage-vs-complexity, coverage-vs-shape, coverage-vs-time, or sweep (with --config)")
-      ->required();
-  std::string experimentConfig;
-  experiment->add_option("--config", experimentConfig, "the YAML config of a sweep (default for the coverage-vs-* names: experiments/configs/)");
-  experiment->add_option("--out", experimentOut, "output folder (default: coverkit-experiment)");
-  bool checkOnly = false;
-  experiment->add_flag("--check", checkOnly, "read and check the config, run nothing, write nothing (experiments with a config)");
-  experiment->add_option("--seeds", bsaOptions.seeds, "number of seeded maps (bsa-backtracking: default 100; decompositions: worlds per hole count, default 25)");
-  experiment->add_option("--size", bsaOptions.size, "map side in cells (default 30)");
-  experiment->add_option("--density", bsaOptions.density, "fraction of blocked cells (default 0.05)");
-  std::string obstacleKind = "clustered";
-  experiment->add_option("--obstacles", obstacleKind, "clustered (blobs, default) or scattered (single cells)");
+  CLI::App* experiment = experiments::addExperimentCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -374,7 +237,11 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
-    if (*demo) return cmdDemo(demoOut, dataDir, quiet);
+    if (*demo) {
+      std::string commandLine;
+      for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(argv[i]);
+      return experiments::runDemo(demoOut, demoJobs, quiet, commandLine);
+    }
     if (*decompose) {
       const auto kv = parseParams(params);
       datasets::checkOutputFile(out, "--out", {".json", ".geojson"});
@@ -523,59 +390,9 @@ int main(int argc, char** argv) {
       return v.valid ? 0 : 1;
     }
     if (*experiment) {
-      // options that only some experiments read are refused elsewhere rather than ignored
-      for (const char* o : {"--seeds", "--size", "--density", "--obstacles"})
-        if (experiment->count(o) && experimentName != "bsa-backtracking" && !(experimentName == "decompositions" && std::string(o) == "--seeds"))
-          throw InputError(o, experimentName, std::string(o) == "--seeds" ? "applies to the bsa-backtracking and decompositions experiments only"
-                                                                        : "applies to the bsa-backtracking experiment only");
-      if (experiment->count("--config") && (experimentName == "bsa-backtracking" || experimentName == "tracc-scenarios"))
-        throw InputError("--config", experimentName, "this experiment takes no config (it has options or is fixed)");
-      const std::map<std::string, std::string> sweeps{{"coverage-vs-size", "coverage_vs_size.yaml"},
-                                                      {"coverage-vs-complexity", "coverage_vs_complexity.yaml"},
-                                                      {"coverage-vs-shape", "coverage_vs_shape.yaml"}};
-      if (checkOnly && !(sweeps.count(experimentName) || experimentName == "sweep" || experimentName == "coverage-vs-time"))
-        throw InputError("--check", experimentName, "only for the experiments with a config (coverage-vs-*, sweep)");
-      if (experimentName == "coverage-vs-time") {
-        const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig("coverage_vs_time.yaml") : experimentConfig;
-        if (checkOnly) {
-          experiments::checkCoverageVsTimeConfig(cfg);
-          std::cout << cfg << ": config checked\n";
-          return 0;
-        }
-        std::cout << experiments::runCoverageVsTime(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
-        return 0;
-      }
-      if (sweeps.count(experimentName) || experimentName == "sweep") {
-        if (experimentName == "sweep" && experimentConfig.empty()) throw InputError("--config", "", "the sweep needs a config file");
-        const std::string cfg = experimentConfig.empty() ? experiments::defaultConfig(sweeps.at(experimentName)) : experimentConfig;
-        if (checkOnly) {
-          experiments::checkSweepConfig(cfg);
-          std::cout << cfg << ": config checked\n";
-          return 0;
-        }
-        std::cout << experiments::runSweep(cfg, experimentOut) << "written: " << experimentOut << "/results.csv, summary.md, chart.svg\n";
-        return 0;
-      }
-      if (experimentName == "decompositions") {
-        experiments::DecompositionExperimentOptions dopt;
-        if (experiment->count("--seeds")) dopt.seeds = bsaOptions.seeds;
-        std::cout << experiments::runDecompositionExperiment(dopt, experimentOut) << "written: " << experimentOut
-                  << "/results.csv, summary.md, chart.svg\n";
-        return 0;
-      }
-      if (experimentName == "tracc-scenarios") {
-        std::cout << experiments::runTraccScenarios(experimentOut) << "written: " << experimentOut
-                  << "/results.csv, summary.md, scenario-K.grid, .json, .svg\n";
-        return 0;
-      }
-      if (experimentName != "bsa-backtracking")
-        throw InputError("experiment", experimentName, "unknown experiment (known: bsa-backtracking, coverage-vs-complexity, decompositions, coverage-vs-shape, coverage-vs-size, coverage-vs-time, sweep, tracc-scenarios)");
-      if (obstacleKind != "clustered" && obstacleKind != "scattered")
-        throw InputError("--obstacles", obstacleKind, "must be clustered or scattered");
-      bsaOptions.clustered = obstacleKind == "clustered";
-      std::cout << experiments::runBsaExperiment(bsaOptions, experimentOut) << "written: " << experimentOut
-                << "/results.csv, summary.md, backtracking.svg\n";
-      return 0;
+      std::string commandLine;
+      for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(argv[i]);
+      return experiments::runExperimentCommand(commandLine);
     }
     if (*render) {
       experiments::checkPictureOutput(out, "--out");

@@ -1,6 +1,9 @@
 #pragma once
 // The papers' experiments, one function each (the `coverkit experiment NAME` command).
+#include "engine.h"
+
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace coverkit::experiments {
@@ -25,12 +28,18 @@ std::string runBsaExperiment(const BsaExperimentOptions& options, const std::str
 /// OUT/scenario-K.svg, OUT/results.csv and OUT/summary.md. Returns the summary.
 std::string runTraccScenarios(const std::string& outDir);
 
-/// Smooth-STC paper, Fig 14-17: coverage of the coverable region, overlap and turns of every planner
-/// of a YAML config on the same seeded polygon worlds, against the robot radius, the number of
-/// obstacles or their shape (`vary`). Shipped configs: experiments/configs/coverage_vs_size.yaml,
-/// coverage_vs_complexity.yaml, coverage_vs_shape.yaml. Writes OUT/results.csv, OUT/summary.md and
-/// OUT/chart.svg. Bad config: InputError naming the file, the key and the problem.
-std::string runSweep(const std::string& configFile, const std::string& outDir);
+/// Smooth-STC paper, Fig 14-17 (kind `sweep` of the engine): coverage of the coverable region,
+/// overlap and turns of every planner of a YAML config on the same seeded polygon worlds (or on map
+/// files, key `maps`), against the robot radius, the number of obstacles or their shape (`vary`).
+/// Shipped configs: experiments/configs/coverage_vs_size.yaml, coverage_vs_complexity.yaml,
+/// coverage_vs_shape.yaml. One case per world and setting, one row per planner; summary.md and
+/// chart.svg from the rows. Bad config: InputError naming the file, the key and the problem.
+std::unique_ptr<Experiment> sweepExperiment(const std::string& configFile);
+
+/// The `scenarios` kind: a list of NAME FILE RADIUS lines (datasets/data/scenarios.txt), every
+/// planner of the config (default all) on each, one picture per run (pictures/NAME_PLANNER.svg).
+/// The demo is this kind with experiments/configs/demo.yaml.
+std::unique_ptr<Experiment> scenarioExperiment(const std::string& configFile);
 
 /// Smooth-STC paper, Fig 13: coverage of the coverable region against time at constant speed, for
 /// every planner of the config (experiments/configs/coverage_vs_time.yaml) on seeded polygon worlds:
@@ -38,7 +47,7 @@ std::string runSweep(const std::string& configFile, const std::string& outDir);
 /// exact). Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg.
 std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir);
 
-/// Read and check a config exactly as runSweep / runCoverageVsTime do (the same InputErrors), then
+/// Read and check a config exactly as sweepExperiment / runCoverageVsTime do (the same InputErrors), then
 /// stop: nothing is run or written. For fuzzing the config reader and for tests.
 void checkSweepConfig(const std::string& configFile);
 void checkCoverageVsTimeConfig(const std::string& configFile);

@@ -23,14 +23,20 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
   phase("planning");
   const auto t0 = std::chrono::steady_clock::now();
   r.plan = planners::runPlanner(planner, ctx, params, timeLimit);
-  r.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() + ctx.cellSeconds;
+  auto since = [](std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+  r.planSeconds = since(t0);
+  r.totalSeconds = r.planSeconds + ctx.cellSeconds;
   if (succeeded(r.plan.status)) {
     phase("validating");
+    const auto t1 = std::chrono::steady_clock::now();
     r.validation = validatePaths(ctx.problem, r.plan.paths);
+    r.validateSeconds = since(t1);
     phase("metrics");
+    const auto t2 = std::chrono::steady_clock::now();
     MetricOptions mo = metricOptions;
     mo.pathsKnownClear = r.validation.valid;  // valid implies continuous and clear
     r.metrics = computeMetrics(ctx.problem, ctx.cells, r.plan.paths, mo);
+    r.metricsSeconds = since(t2);
   } else {
     r.validation.valid = false;
     r.validation.violations.push_back({"status", 0, -1, std::string(toString(r.plan.status)) + ": " + r.plan.message});

@@ -16,7 +16,8 @@ struct RunResult {
   Plan plan;
   ValidationReport validation;
   Metrics metrics;
-  double totalSeconds = 0;
+  double totalSeconds = 0;    ///< the cells' classification and the planner
+  double planSeconds = 0, validateSeconds = 0, metricsSeconds = 0;   ///< wall seconds of each phase
 };
 
 /// The metric options of the command line: everything, including the coverable region, on

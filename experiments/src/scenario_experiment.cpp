@@ -1,0 +1,164 @@
+// The `scenarios` kind of the engine: named maps, each with its own robot radius, planned with
+// every planner of the config (default: every registered one), one picture per run. The demo
+// (`coverkit demo`, the README's first command) is this kind on datasets/data/scenarios.txt.
+#include "engine.h"
+#include "paper_experiments.h"
+#include "render.h"
+#include "runner.h"
+
+#include <coverkit/datasets/readers.h>
+#include <coverkit/geometry/cspace.h>
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/registry.h>
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace coverkit::experiments {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class ScenarioExperiment : public Experiment {
+public:
+  explicit ScenarioExperiment(const std::string& configFile) : file_(configFile) {
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(configFile);
+    } catch (const YAML::BadFile&) {
+      throw InputError(configFile, "file", "cannot be read");
+    } catch (const YAML::Exception& e) {
+      throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
+    }
+    if (!root.IsMap()) throw InputError(configFile, "", "expected a YAML mapping with the keys kind, title, scenarios, planners");
+    for (const auto& kv : root) {
+      const std::string key = kv.first.as<std::string>();
+      if (key != "kind" && key != "title" && key != "scenarios" && key != "planners")
+        throw InputError(configFile, key, "line " + std::to_string(kv.first.Mark().line + 1) + ": unknown key (known: kind, title, scenarios, planners)");
+    }
+    try {
+      title_ = root["title"] ? root["title"].as<std::string>() : "Scenarios";
+      if (!root["scenarios"] || !root["scenarios"].IsScalar()) throw InputError(configFile, "scenarios", "expected the path of a scenario list (NAME FILE RADIUS per line)");
+      const fs::path list = fs::path(configFile).parent_path() / root["scenarios"].as<std::string>();
+      readList(list.string());
+      if (root["planners"] && !(root["planners"].IsScalar() && root["planners"].as<std::string>() == "all")) {
+        if (!root["planners"].IsSequence()) throw InputError(configFile, "planners", "expected a list of planner names, or all");
+        for (const auto& p : root["planners"]) planners_.push_back(p.as<std::string>());
+        for (const std::string& p : planners_)
+          if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
+      } else {
+        planners_ = planners::Registry::instance().names();
+      }
+    } catch (const YAML::Exception& e) {
+      throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "bad value: " + e.msg);
+    }
+    identity_ = "scenarios\n" + datasets::readTextFile(configFile) + "\n" + listText_;
+  }
+
+  std::string kind() const override { return "scenarios"; }
+  std::string identity() const override { return identity_; }
+  std::vector<Column> columns() const override {
+    std::vector<Column> c{{"map", ColumnType::kText}, {"file", ColumnType::kText}, {"planner", ColumnType::kText}, {"radius", ColumnType::kReal}};
+    for (const Column& k : runColumns()) c.push_back(k);
+    return c;
+  }
+  std::size_t cases() const override { return scenarios_.size() * planners_.size(); }
+  std::string caseKey(std::size_t i) const override {
+    return "scenario=" + scenarios_[i / planners_.size()].name + " planner=" + planners_[i % planners_.size()];
+  }
+  Output run(std::size_t i) const override {
+    const Scenario& s = scenarios_[i / planners_.size()];
+    const std::string& planner = planners_[i % planners_.size()];
+    Problem problem;
+    problem.workspace = datasets::loadMap(s.file);
+    problem.robots.push_back({s.radius, std::nullopt});
+    const planners::PlanningContext ctx = planners::makeContext(problem);
+    const CSpace cs(ctx.problem.workspace, s.radius);
+    MetricOptions mo = defaultMetricOptions();
+    mo.cspace = &cs;
+    const RunResult r = runOnce(ctx, planner, {}, 0, {}, mo);
+    Row row{s.name, fs::path(s.file).filename().string(), planner, s.radius.get_d()};
+    appendRun(row, r);
+    const std::string pic = "pictures/" + s.name + "_" + planner + ".svg";
+    PictureContent pc;
+    pc.workspace = &ctx.problem.workspace;
+    pc.cells = &ctx.cells;
+    pc.tree = &r.plan.treeEdges;
+    pc.paths = &r.plan.paths;
+    pc.radius = s.radius.get_d();
+    pc.title = s.name + " / " + planner + " / r=" + s.radiusText + " / " + toString(r.plan.status);
+    Output out{{row}, {{pic, pictureBytes(pic, pc)}}};
+    if (i % planners_.size() == 0) {   // the scenario's C-space, with its first planner's case
+      const std::vector<CurveRegion> cfree = cs.components(), cobs = cs.obstacles();
+      PictureContent cp;
+      cp.workspace = &ctx.problem.workspace;
+      cp.cfree = &cfree;
+      cp.cobstacles = &cobs;
+      cp.title = s.name + " / C-space, r=" + s.radiusText + " / " + std::to_string(cfree.size()) + " component(s)";
+      const std::string name = "pictures/" + s.name + "_cspace.svg";
+      out.files.emplace_back(name, pictureBytes(name, cp));
+    }
+    return out;
+  }
+  std::vector<std::pair<std::string, std::string>> inputs() const override {
+    return {{"config.yaml", datasets::readTextFile(file_)}, {"scenarios.txt", listText_}};
+  }
+  std::vector<std::pair<std::string, std::string>> summarise(const Table& t) const override {
+    std::ostringstream md;
+    std::size_t invalid = 0;
+    md << "# " << title_ << "\n\n" << scenarios_.size() << " scenarios × " << planners_.size()
+       << " planners; every plan checked by the independent validator (continuity, exact clearance, start). Columns: docs/metrics.md.\n\n"
+       << "| map | planner | status | valid | sub-cell coverage | area coverage | coverable coverage | length | turns |\n"
+       << "|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& row : t.rows) {
+      const bool valid = t.real(row, "valid") != 0;
+      if (!valid) ++invalid;
+      std::ostringstream cov;
+      cov << std::fixed << std::setprecision(4) << t.real(row, "subcell_coverage") << " | " << t.real(row, "area_coverage") << " | "
+          << t.real(row, "coverable_coverage");
+      md << "| " << t.text(row, "map") << " | " << t.text(row, "planner") << " | " << t.text(row, "status") << " | " << (valid ? "yes" : "**no**")
+         << " | " << cov.str() << " | " << formatDouble(std::round(t.real(row, "length") * 1000) / 1000) << " | " << t.text(row, "turns") << " |\n";
+    }
+    md << "\n" << t.rows.size() << " plans, " << invalid << " invalid.\n";
+    return {{"summary.md", md.str()}};
+  }
+
+private:
+  struct Scenario {
+    std::string name, file, radiusText;
+    Rational radius;
+  };
+  void readList(const std::string& list) {
+    listText_ = datasets::readTextFile(list);
+    std::istringstream in(listText_);
+    std::string line;
+    for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream ls(line);
+      Scenario s;
+      if (!(ls >> s.name >> s.file >> s.radiusText)) throw InputError(list, "line " + std::to_string(lineNo), "expected NAME FILE RADIUS");
+      s.radius = parseRational(s.radiusText, list, "line " + std::to_string(lineNo));
+      if (s.radius <= 0) throw InputError(list, "line " + std::to_string(lineNo), s.radiusText + ": the radius must be > 0");
+      s.file = (fs::path(list).parent_path() / s.file).string();
+      datasets::loadMap(s.file);   // a bad map stops the run before it starts
+      scenarios_.push_back(s);
+    }
+    if (scenarios_.empty()) throw InputError(list, "", "no scenario (NAME FILE RADIUS per line)");
+  }
+
+  std::string file_, identity_, title_, listText_;
+  std::vector<Scenario> scenarios_;
+  std::vector<std::string> planners_;
+};
+
+}  // namespace
+
+std::unique_ptr<Experiment> scenarioExperiment(const std::string& configFile) { return std::make_unique<ScenarioExperiment>(configFile); }
+
+}  // namespace coverkit::experiments
