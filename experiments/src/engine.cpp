@@ -124,7 +124,32 @@ CaseRows runCase(const Experiment& e, std::size_t i) {
   return out;
 }
 
-// ---- the SQLite store ----------------------------------------------------------------------------
+// ---- the SQLite store ------------------------------------------------------------------------------
+
+/// Every row of table `runs`, ordered by case and row, read as `columns` say.
+std::vector<Row> selectRuns(sqlite3* db, const std::vector<Column>& columns) {
+  std::vector<Row> rows;
+  sqlite3_stmt* st = nullptr;
+  if (sqlite3_prepare_v2(db, "SELECT * FROM runs ORDER BY \"case\", \"row\"", -1, &st, nullptr) != SQLITE_OK) {
+    sqlite3_finalize(st);
+    return rows;
+  }
+  while (sqlite3_step(st) == SQLITE_ROW) {
+    Row r;
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      const int k = static_cast<int>(i);
+      if (columns[i].type == ColumnType::kInteger) r.emplace_back(static_cast<std::int64_t>(sqlite3_column_int64(st, k)));
+      else if (columns[i].type == ColumnType::kReal) r.emplace_back(sqlite3_column_double(st, k));
+      else {
+        const unsigned char* s = sqlite3_column_text(st, k);
+        r.emplace_back(std::string(s ? reinterpret_cast<const char*>(s) : ""));
+      }
+    }
+    rows.push_back(std::move(r));
+  }
+  sqlite3_finalize(st);
+  return rows;
+}
 
 /// OUT/results.db: table `runs` (the typed rows), table `cases` (every finished case, also those
 /// with no row), table `meta` (kind, identity and its hash, the column list). One transaction per
@@ -218,24 +243,7 @@ public:
   Table table() {
     Table t;
     t.columns = columns_;
-    sqlite3_stmt* st = prepare("SELECT * FROM runs ORDER BY \"case\", \"row\"");
-    while (sqlite3_step(st) == SQLITE_ROW) {
-      Row r;
-      for (std::size_t i = 0; i < columns_.size(); ++i) {
-        const int k = static_cast<int>(i);
-        switch (columns_[i].type) {
-          case ColumnType::kInteger: r.emplace_back(static_cast<std::int64_t>(sqlite3_column_int64(st, k))); break;
-          case ColumnType::kReal: r.emplace_back(sqlite3_column_double(st, k)); break;
-          case ColumnType::kText: {
-            const unsigned char* s = sqlite3_column_text(st, k);
-            r.emplace_back(std::string(s ? reinterpret_cast<const char*>(s) : ""));
-            break;
-          }
-        }
-      }
-      t.rows.push_back(std::move(r));
-    }
-    sqlite3_finalize(st);
+    t.rows = selectRuns(db_, columns_);
     return t;
   }
 
@@ -750,21 +758,7 @@ Table readTable(const std::string& outDir) {
     const std::string type = item.substr(colon + 1);
     t.columns.push_back({item.substr(0, colon), type == "INTEGER" ? ColumnType::kInteger : type == "REAL" ? ColumnType::kReal : ColumnType::kText});
   }
-  sqlite3_prepare_v2(db, "SELECT * FROM runs ORDER BY \"case\", \"row\"", -1, &st, nullptr);
-  while (st && sqlite3_step(st) == SQLITE_ROW) {
-    Row r;
-    for (std::size_t i = 0; i < t.columns.size(); ++i) {
-      const int k = static_cast<int>(i);
-      if (t.columns[i].type == ColumnType::kInteger) r.emplace_back(static_cast<std::int64_t>(sqlite3_column_int64(st, k)));
-      else if (t.columns[i].type == ColumnType::kReal) r.emplace_back(sqlite3_column_double(st, k));
-      else {
-        const unsigned char* s = sqlite3_column_text(st, k);
-        r.emplace_back(std::string(s ? reinterpret_cast<const char*>(s) : ""));
-      }
-    }
-    t.rows.push_back(std::move(r));
-  }
-  sqlite3_finalize(st);
+  t.rows = selectRuns(db, t.columns);
   sqlite3_close(db);
   return t;
 }
