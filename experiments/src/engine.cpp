@@ -157,21 +157,30 @@ std::vector<Row> selectRuns(sqlite3* db, const std::vector<Column>& columns) {
 class Store {
 public:
   Store(const std::string& file, const Experiment& e, const std::vector<Column>& columns) : file_(file), columns_(columns) {
-    if (sqlite3_open_v2(file.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK)
+    try {
+      open(e);
+    } catch (...) {   // a constructor that throws has no destructor run: close the handle here
+      if (db_) sqlite3_close(db_);
+      db_ = nullptr;
+      throw;
+    }
+  }
+  void open(const Experiment& e) {
+    if (sqlite3_open_v2(file_.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK)
       fail("cannot be opened");
     exec("PRAGMA busy_timeout = 5000");
     // a folder of another experiment is refused before anything in it changes
     const std::string hash = hashHex(e.identity()), colList = columnList();
     const std::string oldHash = hasTable("meta") ? meta("identity_hash") : "";
     if (!oldHash.empty() && (oldHash != hash || meta("columns") != colList))
-      throw InputError(file, "", "holds the results of another experiment (" + meta("kind") + ", identity " + oldHash + "; this one: " + e.kind() +
+      throw InputError(file_, "", "holds the results of another experiment (" + meta("kind") + ", identity " + oldHash + "; this one: " + e.kind() +
                                      ", " + hash + "): give another --out, or remove the folder");
     exec("PRAGMA journal_mode = WAL");
     exec("PRAGMA synchronous = NORMAL");
     exec("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)");
     exec("CREATE TABLE IF NOT EXISTS cases (\"case\" INTEGER PRIMARY KEY, key TEXT NOT NULL, rows INTEGER NOT NULL)");
     std::string create = "CREATE TABLE IF NOT EXISTS runs (";
-    for (std::size_t i = 0; i < columns.size(); ++i) create += (i ? ", \"" : "\"") + columns[i].name + "\" " + sqlType(columns[i].type);
+    for (std::size_t i = 0; i < columns_.size(); ++i) create += (i ? ", \"" : "\"") + columns_[i].name + "\" " + sqlType(columns_[i].type);
     create += ", PRIMARY KEY (\"case\", \"row\"))";
     exec(create);
     if (oldHash.empty()) {
