@@ -554,6 +554,7 @@ EngineResult runMpi(const Experiment& e, const std::string& outDir, const Engine
     return result;
   }
   Progress progress(e.cases(), result.resumed, o.quiet || !openError.empty());
+  const std::vector<Column> columns = allColumns(e);
   std::size_t next = 0;
   int active = mpi.size - 1;
   std::string failure = openError;
@@ -563,7 +564,7 @@ EngineResult runMpi(const Experiment& e, const std::string& outDir, const Engine
     if (!msg.empty() && msg[0] == '!') {
       if (failure.empty()) failure = msg.substr(1);
     } else if (!msg.empty() && msg[0] == 'R') {
-      const CaseRows c = decodeRows(msg, allColumns(e));
+      const CaseRows c = decodeRows(msg, columns);
       try {
         store->insert(c, e.caseKey(c.index));
         ++result.ran;
@@ -693,7 +694,9 @@ EngineResult runExperiment(const Experiment& e, const std::string& outDir, const
   // each job's metric rasters get a share of the cores (the results do not depend on it)
   const unsigned threadsBefore = threads();
   setThreads(std::max(1u, cores / jobs));
-  Progress progress(o.shards == 1 ? e.cases() : todo.size() + (o.shards == 1 ? done.size() : 0), o.shards == 1 ? done.size() : 0, o.quiet);
+  // a shard counts only its own cases
+  const bool whole = o.shards == 1;
+  Progress progress(whole ? e.cases() : todo.size(), whole ? done.size() : 0, o.quiet);
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex storeMutex;

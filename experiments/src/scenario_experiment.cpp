@@ -1,5 +1,6 @@
 // The `scenarios` kind of the engine: named maps, each with its own robot radius, planned with
-// every planner of the config (default: every registered one), one picture per run. The demo
+// every planner of the config (default: every registered one), one picture per run; a case is one
+// scenario (its C-space shared by its planners), a row one planner. The demo
 // (`coverkit demo`, the README's first command) is this kind on datasets/data/scenarios.txt.
 #include "engine.h"
 #include "paper_experiments.h"
@@ -68,42 +69,43 @@ public:
     for (const Column& k : runColumns()) c.push_back(k);
     return c;
   }
-  std::size_t cases() const override { return scenarios_.size() * planners_.size(); }
-  std::string caseKey(std::size_t i) const override {
-    return "scenario=" + scenarios_[i / planners_.size()].name + " planner=" + planners_[i % planners_.size()];
-  }
+  std::size_t cases() const override { return scenarios_.size(); }
+  std::string caseKey(std::size_t i) const override { return "scenario=" + scenarios_[i].name; }
+  /// One scenario: its C-space built once (the coverable region of every plan, and its picture),
+  /// then one row and one picture per planner.
   Output run(std::size_t i) const override {
-    const Scenario& s = scenarios_[i / planners_.size()];
-    const std::string& planner = planners_[i % planners_.size()];
+    const Scenario& s = scenarios_[i];
     Problem problem;
-    problem.workspace = datasets::loadMap(s.file);
+    problem.workspace = s.workspace;
     problem.robots.push_back({s.radius, std::nullopt});
     const planners::PlanningContext ctx = planners::makeContext(problem);
     const CSpace cs(ctx.problem.workspace, s.radius);
     MetricOptions mo = defaultMetricOptions();
     mo.cspace = &cs;
-    const RunResult r = runOnce(ctx, planner, {}, 0, {}, mo);
-    Row row{s.name, fs::path(s.file).filename().string(), planner, s.radius.get_d()};
-    appendRun(row, r);
-    const std::string pic = "pictures/" + s.name + "_" + planner + ".svg";
-    PictureContent pc;
-    pc.workspace = &ctx.problem.workspace;
-    pc.cells = &ctx.cells;
-    pc.tree = &r.plan.treeEdges;
-    pc.paths = &r.plan.paths;
-    pc.radius = s.radius.get_d();
-    pc.title = s.name + " / " + planner + " / r=" + s.radiusText + " / " + toString(r.plan.status);
-    Output out{{row}, {{pic, pictureBytes(pic, pc)}}};
-    if (i % planners_.size() == 0) {   // the scenario's C-space, with its first planner's case
-      const std::vector<CurveRegion> cfree = cs.components(), cobs = cs.obstacles();
-      PictureContent cp;
-      cp.workspace = &ctx.problem.workspace;
-      cp.cfree = &cfree;
-      cp.cobstacles = &cobs;
-      cp.title = s.name + " / C-space, r=" + s.radiusText + " / " + std::to_string(cfree.size()) + " component(s)";
-      const std::string name = "pictures/" + s.name + "_cspace.svg";
-      out.files.emplace_back(name, pictureBytes(name, cp));
+    Output out;
+    for (const std::string& planner : planners_) {
+      const RunResult r = runOnce(ctx, planner, {}, 0, {}, mo);
+      Row row{s.name, fs::path(s.file).filename().string(), planner, s.radius.get_d()};
+      appendRun(row, r);
+      out.rows.push_back(std::move(row));
+      const std::string pic = "pictures/" + s.name + "_" + planner + ".svg";
+      PictureContent pc;
+      pc.workspace = &ctx.problem.workspace;
+      pc.cells = &ctx.cells;
+      pc.tree = &r.plan.treeEdges;
+      pc.paths = &r.plan.paths;
+      pc.radius = s.radius.get_d();
+      pc.title = s.name + " / " + planner + " / r=" + s.radiusText + " / " + toString(r.plan.status);
+      out.files.emplace_back(pic, pictureBytes(pic, pc));
     }
+    const std::vector<CurveRegion> cfree = cs.components(), cobs = cs.obstacles();
+    PictureContent cp;
+    cp.workspace = &ctx.problem.workspace;
+    cp.cfree = &cfree;
+    cp.cobstacles = &cobs;
+    cp.title = s.name + " / C-space, r=" + s.radiusText + " / " + std::to_string(cfree.size()) + " component(s)";
+    const std::string name = "pictures/" + s.name + "_cspace.svg";
+    out.files.emplace_back(name, pictureBytes(name, cp));
     return out;
   }
   std::vector<std::pair<std::string, std::string>> inputs() const override {
@@ -133,6 +135,7 @@ private:
   struct Scenario {
     std::string name, file, radiusText;
     Rational radius;
+    Workspace workspace;   ///< read once, when the config is checked
   };
   void readList(const std::string& list) {
     listText_ = datasets::readTextFile(list);
@@ -146,7 +149,7 @@ private:
       s.radius = parseRational(s.radiusText, list, "line " + std::to_string(lineNo));
       if (s.radius <= 0) throw InputError(list, "line " + std::to_string(lineNo), s.radiusText + ": the radius must be > 0");
       s.file = (fs::path(list).parent_path() / s.file).string();
-      datasets::loadMap(s.file);   // a bad map stops the run before it starts
+      s.workspace = datasets::loadMap(s.file);   // a bad map stops the run before it starts
       scenarios_.push_back(s);
     }
     if (scenarios_.empty()) throw InputError(list, "", "no scenario (NAME FILE RADIUS per line)");
