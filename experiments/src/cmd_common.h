@@ -1,0 +1,50 @@
+#pragma once
+// What several `coverkit` subcommands share: the map and speed options, KEY=VALUE parameters, the
+// problem read from the map options, and the progress bar.
+#include <coverkit/geometry/path.h>
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace coverkit::experiments {
+
+/// --map, --radius, --cell-size, --unknown-free (plan, evaluate, render, cspace, decompose).
+struct MapArgs {
+  std::string map, radius, cellSize;
+  bool unknownFree = false;
+};
+void addMapOptions(CLI::App* c, MapArgs& m, bool needRadius);
+
+/// --timings, --threads (plan, evaluate).
+struct SpeedArgs {
+  bool timings = false;
+  unsigned threads = 0;
+};
+void addSpeedOptions(CLI::App* c, SpeedArgs& s);
+
+/// --param KEY=VALUE... as a map; InputError for an entry without a key or '='.
+std::map<std::string, std::string> parseParams(const std::vector<std::string>& kv);
+
+/// The problem of one robot of radius `radius` (and `start`, unless empty) on the map `map`.
+Problem makeProblem(const std::string& map, const std::string& radius, const std::string& start, bool unknownFree,
+                    const std::string& cellSize);
+
+/// A progress bar on stderr, shown only on a terminal and only once a run has taken a second.
+class Progress {
+public:
+  explicit Progress(std::size_t total);
+  void step(const std::string& what);
+  ~Progress();
+
+private:
+  std::size_t total_, done_ = 0;
+  std::chrono::steady_clock::time_point t0_;
+  bool tty_, shown_ = false;
+};
+
+}  // namespace coverkit::experiments
