@@ -19,10 +19,10 @@ namespace {
 struct Options {
   CLI::App* command = nullptr;
   std::vector<std::string> args;   // NAME, then its arguments (run: CONFIG; report: DIR; merge: SHARD_DIR...)
-  std::string config, out = "coverkit-experiment", shard, obstacleKind = "clustered";
+  std::string config, out = "coverkit-experiment", shard;
   bool check = false, quiet = false;
   unsigned jobs = 0;
-  BsaExperimentOptions bsa;
+  ConfigOverrides settings;   ///< --seeds, --size, --density, --obstacles as given
 };
 Options& options() {
   static Options o;
@@ -32,7 +32,7 @@ Options& options() {
 std::string namesList() {
   std::string s = "run, report, merge";
   for (const NamedExperiment& n : namedExperiments()) s += ", " + n.name;
-  return s + ", sweep, bsa-backtracking, tracc-scenarios, decompositions, coverage-vs-time";
+  return s + ", sweep";
 }
 
 EngineOptions engineOptions(const std::string& commandLine) {
@@ -100,10 +100,14 @@ CLI::App* addExperimentCommand(CLI::App& app) {
       ->check(CLI::Range(0u, 1024u));
   o.command->add_flag("--quiet", o.quiet, "no progress on stderr");
   o.command->add_option("--shard", o.shard, "i/n: run only the cases k with k mod n = i (a job array); combine with `experiment merge`");
-  o.command->add_option("--seeds", o.bsa.seeds, "number of seeded maps (bsa-backtracking: default 100; decompositions: worlds per hole count, default 25)");
-  o.command->add_option("--size", o.bsa.size, "map side in cells (default 30)");
-  o.command->add_option("--density", o.bsa.density, "fraction of blocked cells (default 0.05)");
-  o.command->add_option("--obstacles", o.obstacleKind, "clustered (blobs, default) or scattered (single cells)");
+  // settings of some kinds' configs, given here instead (the kind's `options` in experiment_registry.cpp)
+  const std::pair<const char*, const char*> settings[] = {
+      {"seeds", "bsa-backtracking: usable seeded maps (default 100); decompositions: worlds per hole count (default 25)"},
+      {"size", "bsa-backtracking: map side in cells (default 30)"},
+      {"density", "bsa-backtracking: fraction of blocked cells (default 0.05)"},
+      {"obstacles", "bsa-backtracking: clustered (blobs, default) or scattered (single cells)"}};
+  for (const auto& [key, help] : settings)
+    o.command->add_option_function<std::string>("--" + std::string(key), [&o, k = std::string(key)](const std::string& v) { o.settings[k] = v; }, help);
   return o.command;
 }
 
@@ -112,25 +116,19 @@ int runExperimentCommand(const std::string& commandLine) {
   CLI::App* c = o.command;
   const std::string name = o.args.front();
   const std::vector<std::string> rest(o.args.begin() + 1, o.args.end());
-  const bool engineName = name == "run" || name == "report" || name == "merge" || name == "sweep" || findNamedExperiment(name);
-  // options that only some experiments read are refused rather than ignored
-  for (const char* opt : {"--seeds", "--size", "--density", "--obstacles"})
-    if (c->count(opt) && name != "bsa-backtracking" && !(name == "decompositions" && std::string(opt) == "--seeds"))
-      throw InputError(opt, name, std::string(opt) == "--seeds" ? "applies to the bsa-backtracking and decompositions experiments only"
-                                                                : "applies to the bsa-backtracking experiment only");
-  for (const char* opt : {"--jobs", "--shard"}) refuse(c->count(opt) && !engineName, opt, name, "applies to the experiments of the engine only (run, sweep, " +
-                                                                                                     namedExperiments().front().name + ", ...)");
   if (name != "run" && name != "report" && name != "merge" && !rest.empty())
     throw InputError("experiment", name, "takes no further argument: '" + rest.front() + "'");
 
   if (name == "run") {
     refuse(rest.size() != 1, "experiment run", "", "expected one config file: coverkit experiment run CONFIG.yaml --out DIR");
     refuse(c->count("--config"), "--config", "run", "the config is the argument of run");
-    return runEngine(*experimentFromConfig(rest.front()), commandLine);
+    return runEngine(*experimentFromConfig(rest.front(), "sweep", o.settings), commandLine);
   }
   if (name == "report") {
     refuse(rest.size() != 1, "experiment report", "", "expected one folder: coverkit experiment report DIR");
-    for (const char* opt : {"--config", "--out", "--check", "--quiet"}) refuse(c->count(opt), opt, "report", "not an option of report (it writes into DIR)");
+    for (const char* opt : {"--config", "--out", "--check", "--quiet", "--jobs", "--shard"})
+      refuse(c->count(opt), opt, "report", "not an option of report (it writes into DIR)");
+    refuse(!o.settings.empty(), "--" + (o.settings.empty() ? std::string() : o.settings.begin()->first), "report", "not an option of report");
     writeFilesInFolder(rest.front(), reportFiles(rest.front()));
     std::cout << "written: " << rest.front() << "/report.html\n";
     return 0;
@@ -139,46 +137,18 @@ int runExperimentCommand(const std::string& commandLine) {
     refuse(rest.empty(), "experiment merge", "", "expected the shard folders: coverkit experiment merge --config CONFIG --out DIR SHARD_DIR...");
     refuse(o.config.empty(), "--config", "merge", "give the config the shards ran");
     const EngineOptions e = engineOptions(commandLine);
-    const EngineResult r = mergeShards(*experimentFromConfig(o.config), rest, o.out, e);
+    const EngineResult r = mergeShards(*experimentFromConfig(o.config, "sweep", o.settings), rest, o.out, e);
     printEngineResult(r, o.out, e);
     return 0;
   }
-  if (const NamedExperiment* n = findNamedExperiment(name)) return runEngine(*experimentFromConfig(o.config.empty() ? defaultConfig(n->config) : o.config), commandLine);
   if (name == "sweep") {
     refuse(o.config.empty(), "--config", "", "the sweep needs a config file (or: coverkit experiment run CONFIG)");
-    return runEngine(*sweepExperiment(o.config), commandLine);
+    return runEngine(*experimentFromConfig(o.config, "sweep", o.settings, "sweep"), commandLine);
   }
-  // the experiments not (yet) on the engine: one process, one core, written at the end
-  if (c->count("--config") && (name == "bsa-backtracking" || name == "tracc-scenarios"))
-    throw InputError("--config", name, "this experiment takes no config (it has options or is fixed)");
-  refuse(o.check && name != "coverage-vs-time", "--check", name, "only for the experiments with a config (run, coverage-vs-*, sweep)");
-  refuse(c->count("--quiet") > 0, "--quiet", name, "applies to the experiments of the engine only");
-  if (name == "coverage-vs-time") {
-    const std::string cfg = o.config.empty() ? defaultConfig("coverage_vs_time.yaml") : o.config;
-    if (o.check) {
-      checkCoverageVsTimeConfig(cfg);
-      std::cout << cfg << ": config checked\n";
-      return 0;
-    }
-    std::cout << runCoverageVsTime(cfg, o.out) << "written: " << o.out << "/results.csv, summary.md, chart.svg\n";
-    return 0;
-  }
-  if (name == "decompositions") {
-    DecompositionExperimentOptions dopt;
-    if (c->count("--seeds")) dopt.seeds = o.bsa.seeds;
-    std::cout << runDecompositionExperiment(dopt, o.out) << "written: " << o.out << "/results.csv, summary.md, chart.svg\n";
-    return 0;
-  }
-  if (name == "tracc-scenarios") {
-    std::cout << runTraccScenarios(o.out) << "written: " << o.out << "/results.csv, summary.md, scenario-K.grid, .json, .svg\n";
-    return 0;
-  }
-  if (name != "bsa-backtracking") throw InputError("experiment", name, "unknown experiment (known: " + namesList() + ")");
-  if (o.obstacleKind != "clustered" && o.obstacleKind != "scattered") throw InputError("--obstacles", o.obstacleKind, "must be clustered or scattered");
-  BsaExperimentOptions bsa = o.bsa;
-  bsa.clustered = o.obstacleKind == "clustered";
-  std::cout << runBsaExperiment(bsa, o.out) << "written: " << o.out << "/results.csv, summary.md, backtracking.svg\n";
-  return 0;
+  const NamedExperiment* n = findNamedExperiment(name);
+  if (!n) throw InputError("experiment", name, "unknown experiment (known: " + namesList() + ")");
+  // a named experiment: its kind with its shipped config, or another config of that kind
+  return runEngine(*experimentFromConfig(o.config.empty() ? defaultConfig(n->config) : o.config, n->kind, o.settings, n->kind), commandLine);
 }
 
 int runDemo(const std::string& outDir, unsigned jobs, bool quiet, const std::string& commandLine) {

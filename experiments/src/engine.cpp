@@ -691,9 +691,11 @@ EngineResult runExperiment(const Experiment& e, const std::string& outDir, const
   const std::vector<std::size_t> todo = todoList(e, done, o);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const unsigned jobs = std::max(1u, std::min<unsigned>(o.jobs ? o.jobs : cores, static_cast<unsigned>(std::max<std::size_t>(1, todo.size()))));
-  // each job's metric rasters get a share of the cores (the results do not depend on it)
+  // --jobs N is the number of cores the run uses: N cases at once, each on one thread; when fewer
+  // cases than cores are left to run, each case's metric rasters get a share of the rest (the
+  // results do not depend on it)
   const unsigned threadsBefore = threads();
-  setThreads(std::max(1u, cores / jobs));
+  setThreads(std::max(1u, (o.jobs ? o.jobs : cores) / jobs));
   // a shard counts only its own cases
   const bool whole = o.shards == 1;
   Progress progress(whole ? e.cases() : todo.size(), whole ? done.size() : 0, o.quiet);

@@ -9,11 +9,27 @@
 
 namespace coverkit::experiments {
 
+namespace {
+/// A kind whose config is all there is (no command-line settings).
+template <std::unique_ptr<Experiment> (*Make)(const std::string&)>
+std::unique_ptr<Experiment> fromFileOnly(const std::string& configFile, const ConfigOverrides&) {
+  return Make(configFile);
+}
+}  // namespace
+
 const std::vector<ExperimentKind>& experimentKinds() {
   static const std::vector<ExperimentKind> kinds{
       {"sweep", "every planner of the config on seeded polygon worlds or map files, against the radius, the obstacle count or their shape",
-       sweepExperiment},
-      {"scenarios", "named maps with their own radius (a NAME FILE RADIUS list), every planner on each, a picture per run", scenarioExperiment},
+       fromFileOnly<sweepExperiment>},
+      {"scenarios", "named maps with their own radius (a NAME FILE RADIUS list), every planner on each, a picture per run",
+       fromFileOnly<scenarioExperiment>},
+      {"coverage-vs-time", "coverage of the coverable region against time at constant speed, every planner of the config on seeded worlds",
+       timeExperiment},
+      {"bsa-backtracking", "BSA's spiral against zigzag filling on seeded grid maps: backtracks, length, turns", bsaExperiment,
+       {"seeds", "size", "density", "obstacles"}},
+      {"tracc-scenarios", "TRACC on the paper's 11×11 scenarios", traccExperiment},
+      {"decompositions", "boustrophedon against trapezoidal cells, and boustrophedon coverage against the STC family", decompositionExperiment,
+       {"seeds"}},
   };
   return kinds;
 }
@@ -24,6 +40,10 @@ const std::vector<NamedExperiment>& namedExperiments() {
       {"coverage-vs-size", "sweep", "coverage_vs_size.yaml", "Smooth-STC paper, Fig 14-15: coverage and overlap against the robot's radius"},
       {"coverage-vs-complexity", "sweep", "coverage_vs_complexity.yaml", "Smooth-STC paper, Fig 16: coverage against the number of obstacles"},
       {"coverage-vs-shape", "sweep", "coverage_vs_shape.yaml", "coverage against the obstacles' shape"},
+      {"coverage-vs-time", "coverage-vs-time", "coverage_vs_time.yaml", "Smooth-STC paper, Fig 13: coverage against time"},
+      {"bsa-backtracking", "bsa-backtracking", "bsa_backtracking.yaml", "BSA paper, section 3: spiral against zigzag filling"},
+      {"tracc-scenarios", "tracc-scenarios", "tracc_scenarios.yaml", "TRACC paper, section 3: its 11×11 scenarios"},
+      {"decompositions", "decompositions", "decompositions.yaml", "boustrophedon against trapezoidal cells (docs/decompositions.md)"},
   };
   return named;
 }
@@ -34,8 +54,15 @@ const NamedExperiment* findNamedExperiment(const std::string& name) {
   return nullptr;
 }
 
-std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile) {
-  std::string kind = "sweep";
+const ExperimentKind* findExperimentKind(const std::string& kind) {
+  for (const ExperimentKind& k : experimentKinds())
+    if (k.kind == kind) return &k;
+  return nullptr;
+}
+
+std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile, const std::string& defaultKind, const ConfigOverrides& overrides,
+                                                 const std::string& requiredKind) {
+  std::string kind = defaultKind;
   try {
     const YAML::Node root = YAML::LoadFile(configFile);
     if (root.IsMap() && root["kind"].IsDefined()) {
@@ -45,12 +72,19 @@ std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile) 
   } catch (const YAML::Exception&) {
     // the kind's own reader reports the file's problem with its line
   }
-  std::string known;
-  for (const ExperimentKind& k : experimentKinds()) {
-    if (k.kind == kind) return k.make(configFile);
-    known += (known.empty() ? "" : ", ") + k.kind;
+  if (!requiredKind.empty() && kind != requiredKind)
+    throw InputError(configFile, "kind", kind + ": this config is of another kind than " + requiredKind + " (run it with: coverkit experiment run " +
+                                             configFile + ")");
+  const ExperimentKind* k = findExperimentKind(kind);
+  if (!k) {
+    std::string known;
+    for (const ExperimentKind& each : experimentKinds()) known += (known.empty() ? "" : ", ") + each.kind;
+    throw InputError(configFile, "kind", "unknown experiment kind '" + kind + "' (known: " + known + ")");
   }
-  throw InputError(configFile, "kind", "unknown experiment kind '" + kind + "' (known: " + known + ")");
+  for (const auto& [key, value] : overrides)
+    if (std::find(k->options.begin(), k->options.end(), key) == k->options.end())
+      throw InputError("--" + key, value, "not a setting of the " + kind + " experiment");
+  return k->make(configFile, overrides);
 }
 
 }  // namespace coverkit::experiments

@@ -4,6 +4,7 @@
 // experiments/configs/. A new kind is a class deriving from Experiment (engine.h) and one line in
 // experiment_registry.cpp.
 #include "engine.h"
+#include "experiment_config.h"
 
 #include <functional>
 #include <memory>
@@ -12,11 +13,14 @@
 
 namespace coverkit::experiments {
 
-using ExperimentFactory = std::function<std::unique_ptr<Experiment>(const std::string& configFile)>;
+/// Makes an experiment of a kind from its config file and the settings given on the command line
+/// instead (see ConfigOverrides; only the kind's `options` can be).
+using ExperimentFactory = std::function<std::unique_ptr<Experiment>(const std::string& configFile, const ConfigOverrides& overrides)>;
 
 struct ExperimentKind {
   std::string kind, description;
   ExperimentFactory make;
+  std::vector<std::string> options = {};   ///< config keys the command line may set (`--KEY VALUE`)
 };
 /// A name of `coverkit experiment NAME`: a kind and its shipped config.
 struct NamedExperiment {
@@ -26,9 +30,15 @@ struct NamedExperiment {
 const std::vector<ExperimentKind>& experimentKinds();
 const std::vector<NamedExperiment>& namedExperiments();
 
-/// The experiment of a config file: its `kind:` (default: sweep) made from it. Bad config:
-/// InputError naming the file and the key, before anything runs.
-std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile);
+/// The experiment of a config file: its `kind:` (absent: `defaultKind`) made from it, with
+/// `overrides` (InputError naming --KEY when the kind has no such option). A config of another kind
+/// than a non-empty `requiredKind` is refused. Bad config: InputError naming the file and the key,
+/// before anything runs.
+std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile, const std::string& defaultKind = "sweep",
+                                                 const ConfigOverrides& overrides = {}, const std::string& requiredKind = "");
+
+/// The kind named `kind`, or nullptr.
+const ExperimentKind* findExperimentKind(const std::string& kind);
 
 /// The named experiment, or nullptr when `name` is not one.
 const NamedExperiment* findNamedExperiment(const std::string& name);

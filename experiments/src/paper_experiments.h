@@ -1,6 +1,10 @@
 #pragma once
-// The papers' experiments, one function each (the `coverkit experiment NAME` command).
+// The experiment kinds of the engine, one file each (sweep_experiment.cpp, scenario_experiment.cpp,
+// bsa_experiment.cpp, tracc_experiment.cpp, time_experiment.cpp, decomposition_experiment.cpp), made
+// from a config file (and, for some, settings given on the command line). Registered in
+// experiment_registry.cpp.
 #include "engine.h"
+#include "experiment_config.h"
 
 #include <cstdint>
 #include <memory>
@@ -8,25 +12,22 @@
 
 namespace coverkit::experiments {
 
-/// BSA paper, section 3: 30×30 grid maps with random obstacles, start S(0, 0), spiral against
-/// zigzag filling, over many seeds. Writes OUT/results.csv (one row per seed and filling),
-/// OUT/summary.md (the table) and OUT/backtracking.svg (the distributions). Returns the summary.
-/// The largest --seeds and --size accepted (a size² map is planned, validated and measured per seed).
+/// BSA paper, section 3 (kind `bsa-backtracking`, experiments/configs/bsa_backtracking.yaml; keys
+/// seeds, size, density, obstacles: clustered or scattered; `coverkit experiment bsa-backtracking
+/// --seeds N --size N --density D --obstacles K` overrides them): seeded grid maps with random
+/// obstacles, start S(0, 0), spiral against zigzag filling. One case per usable seed (the first
+/// `seeds` whose start region holds at least half the free cells), one row per filling; summary.md
+/// and backtracking.svg (the distributions) from the rows.
 constexpr int kBsaMaxSeeds = 100'000;
 constexpr int kBsaMaxSize = 1'000;
-struct BsaExperimentOptions {
-  int seeds = 100;
-  int size = 30;
-  double density = 0.05;  ///< fraction of blocked cells aimed at
-  bool clustered = true;  ///< blobs (as the paper's figures) or scattered single cells
-};
-std::string runBsaExperiment(const BsaExperimentOptions& options, const std::string& outDir);
+std::unique_ptr<Experiment> bsaExperiment(const std::string& configFile, const ConfigOverrides& overrides);
 
-/// TRACC paper, section 3: its 11×11 grid (C1 … C121 row by row from S = C1) without obstacles and
-/// in the two scenarios the text describes (scenario 2's obstacles are our assumption: the text
-/// names only C60, C62 and C121). Writes OUT/scenario-K.grid, OUT/scenario-K.json (the path),
-/// OUT/scenario-K.svg, OUT/results.csv and OUT/summary.md. Returns the summary.
-std::string runTraccScenarios(const std::string& outDir);
+/// TRACC paper, section 3 (kind `tracc-scenarios`, experiments/configs/tracc_scenarios.yaml: nothing
+/// to set): its 11×11 grid (C1 … C121 row by row from S = C1) without obstacles and in the two
+/// scenarios the text describes (scenario 2's obstacles are our assumption: the text names only
+/// C60, C62 and C121). One case and row per scenario, with its files scenario-K.grid, .json (the
+/// path) and .svg; summary.md.
+std::unique_ptr<Experiment> traccExperiment(const std::string& configFile, const ConfigOverrides& overrides);
 
 /// Smooth-STC paper, Fig 14-17 (kind `sweep` of the engine): coverage of the coverable region,
 /// overlap and turns of every planner of a YAML config on the same seeded polygon worlds (or on map
@@ -41,26 +42,25 @@ std::unique_ptr<Experiment> sweepExperiment(const std::string& configFile);
 /// The demo is this kind with experiments/configs/demo.yaml.
 std::unique_ptr<Experiment> scenarioExperiment(const std::string& configFile);
 
-/// Smooth-STC paper, Fig 13: coverage of the coverable region against time at constant speed, for
-/// every planner of the config (experiments/configs/coverage_vs_time.yaml) on seeded polygon worlds:
-/// the covered area of each path's prefix at common times (rasterised with its bound; the full path
-/// exact). Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg.
-std::string runCoverageVsTime(const std::string& configFile, const std::string& outDir);
+/// Smooth-STC paper, Fig 13 (kind `coverage-vs-time`, experiments/configs/coverage_vs_time.yaml):
+/// coverage of the coverable region against time at constant speed, for every planner of the config
+/// on seeded polygon worlds: the covered area of each path's prefix at common times (rasterised
+/// with its bound; the full path exact). One case per world, one row per planner; summary.md and
+/// chart.svg.
+std::unique_ptr<Experiment> timeExperiment(const std::string& configFile, const ConfigOverrides& overrides);
 
-/// Read and check a config exactly as sweepExperiment / runCoverageVsTime do (the same InputErrors), then
+/// Read and check a config exactly as sweepExperiment / timeExperiment do (the same InputErrors), then
 /// stop: nothing is run or written. For fuzzing the config reader and for tests.
 void checkSweepConfig(const std::string& configFile);
 void checkCoverageVsTimeConfig(const std::string& configFile);
 
-/// Issue 13: boustrophedon (BCD) against trapezoidal (TCD) cells of the exact C-free on seeded 20×20
-/// polygon worlds with 0 … 30 holes (rotated rectangles, convex polygons, stars, discs), their
+/// Boustrophedon (BCD) against trapezoidal (TCD) cells of the exact C-free (kind `decompositions`,
+/// experiments/configs/decompositions.yaml; keys seeds: worlds per hole count, holes: the hole
+/// counts) on seeded 20×20 polygon worlds (rotated rectangles, convex polygons, stars, discs), their
 /// times, and boustrophedon coverage (on either decomposition) against Full-STC and Smooth-STC on
-/// the same worlds. Writes OUT/results.csv, OUT/summary.md and OUT/chart.svg; returns the summary.
+/// the same worlds. One case per world, one row per planner; summary.md and chart.svg.
 constexpr int kDecompositionMaxSeeds = 10'000;
-struct DecompositionExperimentOptions {
-  int seeds = 25;   ///< worlds per hole count
-};
-std::string runDecompositionExperiment(const DecompositionExperimentOptions& options, const std::string& outDir);
+std::unique_ptr<Experiment> decompositionExperiment(const std::string& configFile, const ConfigOverrides& overrides);
 
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);

@@ -7,9 +7,40 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <map>
 
 namespace coverkit::experiments {
+
+namespace {
+/// Cairo names an SVG's surfaces (id="surfaceN", href="#surfaceN") from a counter shared by the
+/// whole process, so the same picture drawn after another one, or on another thread, would come out
+/// with other bytes. The ids are renumbered 1, 2, ... in order of first appearance.
+std::string renumberSurfaces(const std::string& svg) {
+  static const std::string kWord = "surface";
+  std::map<std::string, std::string> ids;
+  std::string out;
+  out.reserve(svg.size());
+  std::size_t i = 0;
+  while (i < svg.size()) {
+    const std::size_t k = svg.find(kWord, i);
+    std::size_t end = k == std::string::npos ? svg.size() : k + kWord.size();
+    while (k != std::string::npos && end < svg.size() && std::isdigit(static_cast<unsigned char>(svg[end]))) ++end;
+    if (k == std::string::npos || end == k + kWord.size()) {   // no number after it: copied as it is
+      out.append(svg, i, end - i);
+      i = end;
+      continue;
+    }
+    out.append(svg, i, k - i);
+    const std::string number = svg.substr(k + kWord.size(), end - k - kWord.size());
+    const auto it = ids.emplace(number, std::to_string(ids.size() + 1)).first;
+    out += kWord + it->second;
+    i = end;
+  }
+  return out;
+}
+}  // namespace
 
 namespace {
 
@@ -188,7 +219,7 @@ std::string pictureBytes(const std::string& file, const PictureContent& c) {
   if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
   if (st != CAIRO_STATUS_SUCCESS) throw InputError(file, "", std::string("the picture cannot be drawn: ") + cairo_status_to_string(st));
-  return bytes;
+  return svg ? renumberSurfaces(bytes) : bytes;
 }
 
 }  // namespace coverkit::experiments

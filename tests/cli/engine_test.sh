@@ -126,5 +126,34 @@ cfg maps 'planners: [stc, boustrophedon]\nmaps: [maps]\nradii: [0.25, 0.5]\n' > 
 "$CK" experiment run "$T/maps.yaml" --out "$T/m" --quiet > "$T/m.out" 2>&1 && [ "$(rows "$T/m" | tail -1)" = "cases: 4" ] &&
   [ "$(grep -c ',exact_solution,1,' "$T/m/results.csv")" -ge 6 ] && ok || bad "sweep over a folder of maps: $(cat "$T/m.out") $(rows "$T/m")"
 
+# every kind on the engine: the same rows and files (pictures too) for --jobs 1 and --jobs 2; a
+# summary with times in it (decompositions) is left out of the comparison
+same_files() {   # DIR_A DIR_B: every file other than the database, run.json and results.csv, byte for byte
+  local f
+  for f in $(cd "$1" && find . -type f ! -name results.db ! -name run.json ! -name results.csv ! -name report.html | sort); do
+    cmp -s "$1/$f" "$2/$f" || { echo "$f"; return 1; }
+  done
+}
+printf 'kind: scenarios\nscenarios: list.txt\nplanners: [full_stc, boustrophedon]\n' > "$T/scen.yaml"
+printf 'a maps/a.grid 0.25\nb maps/b.grid 0.25\n' > "$T/list.txt"
+printf 'kind: coverage-vs-time\nplanners: [stc, full_stc]\nradius: 0.5\nsteps: 3\nworlds: {count: 2, width: 8, height: 8, obstacles: 2}\n' > "$T/time.yaml"
+printf 'kind: decompositions\nseeds: 1\nholes: [0, 3]\n' > "$T/dec.yaml"
+printf 'kind: bsa-backtracking\nseeds: 4\nsize: 12\n' > "$T/bsa.yaml"
+printf 'kind: tracc-scenarios\n' > "$T/tracc.yaml"
+for c in scen time dec bsa tracc; do
+  file="$T/$c.yaml"
+  "$CK" experiment run "$file" --out "$T/$c-1" --jobs 1 --quiet > "$T/$c.out" 2>&1 && "$CK" experiment run "$file" --out "$T/$c-2" --jobs 2 --quiet >> "$T/$c.out" 2>&1 ||
+    bad "kind $c: $(tail -3 "$T/$c.out")"
+  [ "$(rows "$T/$c-1")" = "$(rows "$T/$c-2")" ] && [ "$(rows "$T/$c-1" | wc -l)" -gt 2 ] && ok || bad "kind $c: jobs 1 and 2 give other rows"
+  if [ "$c" = dec ]; then diff -q <(csv_rows "$T/$c-1") <(csv_rows "$T/$c-2") > /dev/null && ok || bad "kind $c: other results.csv"
+  else d="$(same_files "$T/$c-1" "$T/$c-2")" && ok || bad "kind $c: jobs 1 and 2 give another $d"; fi
+done
+ls "$T/scen-1/pictures/"*.svg > /dev/null 2>&1 && ok || bad "kind scenarios: no pictures"
+[ -s "$T/tracc-2/scenario-2.svg" ] && grep -q '^| 1 | C5;' "$T/tracc-2/summary.md" && ok || bad "tracc-scenarios: $(head -c 300 "$T/tracc-2/summary.md")"
+if "$CK" --version | grep -q "with MPI" && command -v mpirun > /dev/null; then
+  mpirun --oversubscribe -np 3 "$CK" experiment run "$T/scen.yaml" --out "$T/scen-mpi" --quiet > "$T/scen-mpi.out" 2>&1 &&
+    [ "$(rows "$T/scen-1")" = "$(rows "$T/scen-mpi")" ] && d="$(same_files "$T/scen-1" "$T/scen-mpi")" && ok || bad "scenarios under mpirun -np 3: other rows or $d"
+fi
+
 echo "engine test: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]
