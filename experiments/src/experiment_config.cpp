@@ -5,6 +5,8 @@
 #include <coverkit/planners/registry.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -110,11 +112,29 @@ ExperimentConfig loadExperimentConfig(const std::string& configFile, int default
   const YAML::Node wn = root["worlds"];
   if (wn.IsDefined()) {
     if (!wn.IsMap())
-      throw InputError(configFile, "worlds", lineOf(wn) + "expected a mapping (count, width, height, obstacles, shape, min_size, max_size), got " + kindOf(wn));
-    checkKeys(wn, configFile, "worlds.", {"count", "width", "height", "obstacles", "shape", "min_size", "max_size"});
+      throw InputError(configFile, "worlds", lineOf(wn) + "expected a mapping (count or seeds, width, height, obstacles, shape, min_size, max_size), got " + kindOf(wn));
+    checkKeys(wn, configFile, "worlds.", {"count", "seeds", "width", "height", "obstacles", "shape", "min_size", "max_size"});
   }
   const YAML::Node worlds = wn.IsDefined() ? wn : YAML::Node(YAML::NodeType::Map);  // absent: every default
   c.count = configInt(worlds, configFile, "count", defaultCount, 1, 10'000, "worlds.count");
+  if (worlds["seeds"].IsDefined()) {   // the worlds' seeds listed, instead of 1 … count
+    if (worlds["count"].IsDefined()) throw InputError(configFile, "worlds.seeds", lineOf(worlds["seeds"]) + "give count or seeds, not both");
+    for (const std::string& text : configValue<std::vector<std::string>>(worlds, configFile, "seeds", {}, "worlds.seeds")) {
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+      if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE || v > 9'223'372'036'854'775'807ULL)
+        throw InputError(configFile, "worlds.seeds", lineOf(worlds["seeds"]) + text + ": not a seed (an integer 0 … 2^63 - 1)");
+      if (std::find(c.seeds.begin(), c.seeds.end(), v) != c.seeds.end())
+        throw InputError(configFile, "worlds.seeds", lineOf(worlds["seeds"]) + text + ": listed twice");
+      c.seeds.push_back(static_cast<std::uint64_t>(v));
+    }
+    if (c.seeds.empty() || c.seeds.size() > 10'000)
+      throw InputError(configFile, "worlds.seeds", lineOf(worlds["seeds"]) + "give 1 to 10000 seeds");
+    c.count = static_cast<int>(c.seeds.size());
+  } else {
+    for (int k = 1; k <= c.count; ++k) c.seeds.push_back(static_cast<std::uint64_t>(k));
+  }
   c.worlds.width = configInt(worlds, configFile, "width", 20, 1, 10'000, "worlds.width");
   c.worlds.height = configInt(worlds, configFile, "height", 20, 1, 10'000, "worlds.height");
   c.worlds.count = configInt(worlds, configFile, "obstacles", 10, 0, 10'000, "worlds.obstacles");

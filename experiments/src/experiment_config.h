@@ -13,6 +13,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -97,7 +98,8 @@ struct ExperimentConfig {
   std::vector<std::string> planners;
   datasets::PolygonWorldSpec worlds;
   std::string shape;  ///< as written
-  int count = 0;      ///< worlds: seeds 1 … count
+  int count = 0;      ///< the number of worlds
+  std::vector<std::uint64_t> seeds;   ///< the worlds' seeds: `worlds.seeds`, or 1 … count
 };
 
 /// The config's root (loadConfigRoot), its planners (default stc, full_stc; each checked with its

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace coverkit::experiments {
@@ -77,7 +78,7 @@ public:
     const Scenario& s = scenarios_[i];
     Problem problem;
     problem.workspace = s.workspace;
-    problem.robots.push_back({s.radius, std::nullopt});
+    problem.robots.push_back({s.radius, s.start});
     const planners::PlanningContext ctx = planners::makeContext(problem);
     const CSpace cs(ctx.problem.workspace, s.radius);
     MetricOptions mo = defaultMetricOptions();
@@ -135,6 +136,7 @@ private:
   struct Scenario {
     std::string name, file, radiusText;
     Rational radius;
+    std::optional<Point> start;   ///< the list's START, or the planners' default
     Workspace workspace;   ///< read once, when the config is checked
   };
   void readList(const std::string& list) {
@@ -145,11 +147,31 @@ private:
       if (line.empty() || line[0] == '#') continue;
       std::istringstream ls(line);
       Scenario s;
-      if (!(ls >> s.name >> s.file >> s.radiusText)) throw InputError(list, "line " + std::to_string(lineNo), "expected NAME FILE RADIUS");
-      s.radius = parseRational(s.radiusText, list, "line " + std::to_string(lineNo));
-      if (s.radius <= 0) throw InputError(list, "line " + std::to_string(lineNo), s.radiusText + ": the radius must be > 0");
+      const std::string where = "line " + std::to_string(lineNo);
+      if (!(ls >> s.name >> s.file >> s.radiusText)) throw InputError(list, where, "expected NAME FILE RADIUS [START]");
+      s.radius = parseRational(s.radiusText, list, where);
+      if (s.radius <= 0) throw InputError(list, where, s.radiusText + ": the radius must be > 0");
+      std::string startText, extra;
+      if (ls >> startText) {
+        try {
+          s.start = parsePoint(startText, "START");
+        } catch (const InputError& e) {
+          throw InputError(list, where, "'" + startText + "': the start must be X,Y (" + e.problem() + ")");
+        }
+      }
+      if (ls >> extra) throw InputError(list, where, "'" + extra + "': expected NAME FILE RADIUS [START], and nothing after");
+      for (const Scenario& other : scenarios_)
+        if (other.name == s.name) throw InputError(list, where, "'" + s.name + "': a scenario of this name is listed before (names name the pictures)");
       s.file = (fs::path(list).parent_path() / s.file).string();
       s.workspace = datasets::loadMap(s.file);   // a bad map stops the run before it starts
+      Problem probe;
+      probe.workspace = s.workspace;
+      probe.robots.push_back({s.radius, s.start});
+      try {   // the robot must fit the map and the start lie in it: checked before anything runs
+        planners::checkProblem(probe);
+      } catch (const InputError& e) {
+        throw InputError(list, where, e.what());
+      }
       scenarios_.push_back(s);
     }
     if (scenarios_.empty()) throw InputError(list, "", "no scenario (NAME FILE RADIUS per line)");

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 namespace coverkit::experiments {
@@ -24,7 +25,7 @@ namespace {
 class SweepExperiment : public Experiment {
 public:
   explicit SweepExperiment(const std::string& configFile) : file_(configFile) {
-    ec_ = loadExperimentConfig(configFile, 10, {"title", "planners", "vary", "radii", "values", "radius", "worlds", "maps", "repetitions", "kind"});
+    ec_ = loadExperimentConfig(configFile, 10, {"title", "planners", "vary", "radii", "values", "radius", "worlds", "maps", "starts", "repetitions", "kind"});
     const YAML::Node& cfg = ec_.root;
     identity_ = "sweep\n" + datasets::readTextFile(configFile);
     title_ = configValue<std::string>(cfg, configFile, "title", "Coverage and overlap against robot size");
@@ -42,6 +43,21 @@ public:
     if (values_.empty()) throw InputError(configFile, valuesKey, lineOf(cfg[valuesKey]) + "the list is empty: give at least one value");
     fixedRadius_ = configValue<std::string>(cfg, configFile, "radius", "0.25");
     repetitions_ = configInt(cfg, configFile, "repetitions", 1, 1, 1000);
+    // the robot's starts: `default` (the planners' own choice) or X,Y in map coordinates, exact
+    for (const std::string& text : configValue<std::vector<std::string>>(cfg, configFile, "starts", {"default"})) {
+      if (std::find_if(starts_.begin(), starts_.end(), [&](const Start& s) { return s.text == text; }) != starts_.end())
+        throw InputError(configFile, "starts", lineOf(cfg["starts"]) + "'" + text + "' is listed twice");
+      Start st{text, std::nullopt};
+      if (text != "default") {
+        try {
+          st.point = parsePoint(text, "starts");
+        } catch (const InputError& e) {
+          throw InputError(configFile, "starts", lineOf(cfg["starts"]) + "'" + text + "': expected default or X,Y (" + e.problem() + ")");
+        }
+      }
+      starts_.push_back(st);
+    }
+    if (starts_.empty()) throw InputError(configFile, "starts", lineOf(cfg["starts"]) + "the list is empty: give default or X,Y points");
     if (cfg["maps"].IsDefined()) {
       if (cfg["worlds"].IsDefined()) throw InputError(configFile, "maps", lineOf(cfg["maps"]) + "give maps or worlds, not both");
       if (vary_ != "radius") throw InputError(configFile, "vary", vary_ + ": with maps only the radius can vary");
@@ -76,45 +92,61 @@ public:
   std::vector<Column> columns() const override {
     using T = ColumnType;
     std::vector<Column> c{{"map", T::kText},     {"world", T::kInteger},      {"vary", T::kText}, {"value", T::kText},
-                          {"planner", T::kText}, {"repetition", T::kInteger}, {"radius", T::kReal}};
+                          {"planner", T::kText}, {"repetition", T::kInteger}, {"radius", T::kReal}, {"start", T::kText}};
     for (const Column& k : runColumns()) c.push_back(k);
     return c;
   }
-  std::size_t cases() const override { return places() * settings_.size(); }
+  /// Cases: world (or map), then setting, then start, in that order (with one start, the case
+  /// numbers of a config without `starts`).
+  std::size_t cases() const override { return places() * settings_.size() * starts_.size(); }
   std::string caseKey(std::size_t i) const override {
-    const std::size_t place = i / settings_.size(), si = i % settings_.size();
-    return (maps_.empty() ? "world=" + std::to_string(place + 1) : "map=" + fs::path(maps_[place].file).filename().string()) + " " + vary_ + "=" + values_[si];
+    const Index x = index(i);
+    return (maps_.empty() ? "world=" + std::to_string(ec_.seeds[x.place]) : "map=" + fs::path(maps_[x.place].file).filename().string()) + " " + vary_ + "=" +
+           values_[x.setting] + (starts_.size() > 1 ? " start=" + starts_[x.start].text : "");
   }
   Output run(std::size_t i) const override {
-    const std::size_t place = i / settings_.size(), si = i % settings_.size();
+    const Index x = index(i);
+    const std::size_t place = x.place, si = x.setting;
+    const Start& start = starts_[x.start];
     Problem problem;
     std::string mapName = "worlds";
     std::int64_t world = 0;
     if (maps_.empty()) {
       datasets::PolygonWorldSpec spec = settings_[si].spec;
-      spec.seed = static_cast<std::uint64_t>(place + 1);
-      world = static_cast<std::int64_t>(place + 1);
+      spec.seed = ec_.seeds[place];
+      world = static_cast<std::int64_t>(ec_.seeds[place]);
       problem.workspace = datasets::generatePolygonWorld(spec);
     } else {
       problem.workspace = maps_[place].workspace;
       mapName = maps_[place].file;
     }
     const Rational& r = settings_[si].radius;
-    problem.robots.push_back({r, std::nullopt});
+    problem.robots.push_back({r, start.point});
     planners::PlanningContext ctx;
+    std::vector<Row> rows;
     try {
       ctx = planners::makeContext(problem);
     } catch (const InputError&) {
-      return {};   // the robot does not fit this world: no run
+      if (!start.point) return {};   // the robot does not fit this world: no run
+      // a start given in the config that lies outside this world or in an obstacle: every planner's
+      // row says so (status invalid_start), counted as not planned
+      RunResult none;
+      none.plan.status = PlanStatus::kInvalidStart;
+      for (const std::string& p : ec_.planners)
+        for (int rep = 0; rep < repetitions_; ++rep) {
+          Row row{mapName, world, vary_, values_[si], p, static_cast<std::int64_t>(rep), r.get_d(), start.text};
+          appendRun(row, none);
+          rows.push_back(std::move(row));
+        }
+      return {rows, {}};
     }
     const CSpace cspace(problem.workspace, r);
     MetricOptions mo = defaultMetricOptions();
     mo.cspace = &cspace;
-    std::vector<Row> rows;
     for (const std::string& p : ec_.planners)
       for (int rep = 0; rep < repetitions_; ++rep) {
         const RunResult res = runSpec(ctx, p, file_, mo);
-        Row row{mapName, world, vary_, values_[si], p, static_cast<std::int64_t>(rep), r.get_d()};
+        Row row{mapName, world, vary_, values_[si], p, static_cast<std::int64_t>(rep), r.get_d(), start.text};
         appendRun(row, res);
         rows.push_back(std::move(row));
       }
@@ -132,7 +164,7 @@ public:
     std::map<std::string, std::vector<Acc>> acc;   // planner → setting
     for (const std::string& p : ec_.planners) acc[p].resize(settings_.size());
     for (const Row& row : t.rows) {
-      const std::size_t si = static_cast<std::size_t>(t.real(row, "case")) % settings_.size();
+      const std::size_t si = index(static_cast<std::size_t>(t.real(row, "case"))).setting;
       Acc& a = acc[t.text(row, "planner")][si];
       const std::string status = t.text(row, "status");
       if (status != toString(PlanStatus::kExactSolution) && status != toString(PlanStatus::kPartialCoverage)) {   // e.g. STC when the start has no free mega-cell: coverage 0
@@ -162,7 +194,7 @@ public:
          << (vary_ == "shape" ? std::string("shape varied") : ec_.shape) << ", " << base.minSize << "-" << base.maxSize << " m), ";
     else
       md << maps_.size() << " map files per setting, ";
-    md << (vary_ == "radius" ? std::string("robot radius varied") : "r = " + fixedRadius_) << "; sub-cells 2r; default start. Coverage: covered area / "
+    md << (vary_ == "radius" ? std::string("robot radius varied") : "r = " + fixedRadius_) << "; sub-cells 2r; " << startsText() << ". Coverage: covered area / "
        << "coverable area (the start's C-free component ⊕ disc). Overlap: swept area counted with multiplicity / covered area − 1. "
        << "Plans that did not succeed count as coverage 0; invalid plans are counted and left out.\n\n"
        << "| planner | " << vary_ << " | plans | mean coverage | min coverage | mean overlap | mean turns | mean turning angle (°) | not planned | invalid |\n"
@@ -196,6 +228,23 @@ public:
 
 private:
   std::size_t places() const { return maps_.empty() ? static_cast<std::size_t>(ec_.count) : maps_.size(); }
+  struct Index {
+    std::size_t place, setting, start;
+  };
+  Index index(std::size_t i) const {
+    return {i / (settings_.size() * starts_.size()), (i / starts_.size()) % settings_.size(), i % starts_.size()};
+  }
+  struct Start {
+    std::string text;
+    std::optional<Point> point;   ///< none: the planners' default start
+  };
+  std::vector<Start> starts_;
+  std::string startsText() const {
+    if (starts_.size() == 1 && !starts_[0].point) return "default start";
+    std::string t = "starts";
+    for (std::size_t k = 0; k < starts_.size(); ++k) t += (k ? ", " : " ") + starts_[k].text;
+    return t + " (a start outside a world or in an obstacle: not planned)";
+  }
   struct Setting {
     Rational radius;
     datasets::PolygonWorldSpec spec;

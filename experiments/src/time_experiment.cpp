@@ -61,13 +61,13 @@ public:
     return c;
   }
   std::size_t cases() const override { return static_cast<std::size_t>(ec_.count); }
-  std::string caseKey(std::size_t i) const override { return "world=" + std::to_string(i + 1); }
+  std::string caseKey(std::size_t i) const override { return "world=" + std::to_string(ec_.seeds[i]); }
   /// The world's planners, then each one's covered area at the common times: the time axis is the
   /// slowest planner's finish split in `steps` (a planner that has finished keeps its final
   /// coverage; prefixes are rasterised with their bound, the full path exact).
   Output run(std::size_t i) const override {
     datasets::PolygonWorldSpec spec = ec_.worlds;
-    spec.seed = static_cast<std::uint64_t>(i + 1);
+    spec.seed = ec_.seeds[i];
     Problem problem;
     problem.workspace = datasets::generatePolygonWorld(spec);
     problem.robots.push_back({r_, std::nullopt});
@@ -101,7 +101,7 @@ public:
           error[static_cast<std::size_t>(k)] = m.areaCoverageError * m.freeArea / res.metrics.coverableArea;
         }
       }
-      Row row{static_cast<std::int64_t>(i + 1), ec_.planners[p], res.metrics.length / speed_, horizon};
+      Row row{static_cast<std::int64_t>(ec_.seeds[i]), ec_.planners[p], res.metrics.length / speed_, horizon};
       for (double c : coverage) row.emplace_back(c);
       for (double e : error) row.emplace_back(e);
       appendRun(row, res);

@@ -52,7 +52,7 @@ EOF
 cmp -s "$T/j1/summary.md" "$T/j2/summary.md" && cmp -s "$T/j1/chart.svg" "$T/j2/chart.svg" && ok || bad "jobs 1 and 2 give another summary or chart"
 for f in results.csv results.db run.json summary.md chart.svg config.yaml; do [ -s "$T/j1/$f" ] || bad "missing $f"; done
 python3 -c "import json,sys; j=json.load(open(sys.argv[1])); assert j['format']=='coverkit.run/1' and j['cases']==6 and j['jobs']==1 and j['git_revision'] and j['cpu']" "$T/j1/run.json" && ok || bad "run.json: $(cat "$T/j1/run.json")"
-head -1 "$T/j1/results.csv" | grep -q '^case,row,key,map,world,vary,value,planner,repetition,radius,status,valid,violations,subcell_coverage,' && ok || bad "results.csv header: $(head -1 "$T/j1/results.csv")"
+head -1 "$T/j1/results.csv" | grep -q '^case,row,key,map,world,vary,value,planner,repetition,radius,start,status,valid,violations,subcell_coverage,' && ok || bad "results.csv header: $(head -1 "$T/j1/results.csv")"
 
 # the same command again on a complete folder: nothing runs, the same files
 "$CK" experiment run "$T/small.yaml" --out "$T/j1" --quiet > "$T/again.out" && grep -q "0 cases run now, 6 resumed" "$T/again.out" && ok || bad "rerun of a complete folder: $(cat "$T/again.out")"
@@ -154,6 +154,38 @@ if "$CK" --version | grep -q "with MPI" && command -v mpirun > /dev/null; then
   mpirun --oversubscribe -np 3 "$CK" experiment run "$T/scen.yaml" --out "$T/scen-mpi" --quiet > "$T/scen-mpi.out" 2>&1 &&
     [ "$(rows "$T/scen-1")" = "$(rows "$T/scen-mpi")" ] && d="$(same_files "$T/scen-1" "$T/scen-mpi")" && ok || bad "scenarios under mpirun -np 3: other rows or $d"
 fi
+
+# starts and listed seeds: a case per world, setting and start; a start in an obstacle of a world is
+# a row per planner with status invalid_start; the worlds are the seeds listed
+printf 'planners: [full_stc]\nradii: [0.5]\nstarts: [default, "1,1", "5.5,4.5"]\nworlds: {seeds: [7, 3], width: 12, height: 10, obstacles: 4}\n' > "$T/starts.yaml"
+"$CK" experiment run "$T/starts.yaml" --out "$T/starts" --quiet > "$T/starts.out" 2>&1 && [ "$(rows "$T/starts" | tail -1)" = "cases: 6" ] &&
+  python3 - "$T/starts/results.csv" <<'EOF' && ok || bad "starts and seeds: $(cat "$T/starts.out") $(csv_rows "$T/starts" | cut -c1-120)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [r["world"] for r in rows][::3] == ["7", "3"], [r["world"] for r in rows]
+assert [r["start"] for r in rows[:3]] == ["default", "1,1", "5.5,4.5"]
+for r in rows:
+    assert r["status"] in ("exact_solution", "partial_coverage", "invalid_start"), r["status"]
+    assert r["status"] != "exact_solution" or r["valid"] == "1"
+EOF
+printf 'planners: [full_stc]\nradii: [0.5]\nstarts: ["1,1", nowhere]\n' > "$T/bad-start.yaml"
+"$CK" experiment run "$T/bad-start.yaml" --out "$T/bad-start" --quiet 2> "$T/bad.err"; rc=$?
+[ "$rc" -eq 2 ] && grep -q "bad-start.yaml: starts: line 3: 'nowhere': expected default or X,Y" "$T/bad.err" && [ ! -e "$T/bad-start" ] && ok || bad "bad start: exit $rc: $(cat "$T/bad.err")"
+printf 'worlds: {seeds: [1, x]}\n' > "$T/bad-seeds.yaml"
+"$CK" experiment run "$T/bad-seeds.yaml" --out "$T/bad-seeds" --quiet 2> "$T/bad.err"; rc=$?
+[ "$rc" -eq 2 ] && grep -q "bad-seeds.yaml: worlds.seeds: line 1: x: not a seed" "$T/bad.err" && ok || bad "bad seeds: exit $rc: $(cat "$T/bad.err")"
+# a scenario list with starts (listed cases: map, radius, start); a start in an obstacle is refused first
+printf 'kind: scenarios\nscenarios: list2.txt\nplanners: [full_stc]\n' > "$T/scen2.yaml"
+printf 'a maps/a.grid 0.25 0.5,0.5\nb maps/b.grid 0.25 7.5,2.5\n' > "$T/list2.txt"
+"$CK" experiment run "$T/scen2.yaml" --out "$T/scen2" --quiet > "$T/scen2.out" 2>&1 &&
+  [ "$(python3 -c 'import csv,sys; print(sum(r["valid"] == "1" for r in csv.DictReader(open(sys.argv[1]))))' "$T/scen2/results.csv")" = 2 ] && ok ||
+  bad "scenarios with starts: $(cat "$T/scen2.out")"
+printf 'a maps/a.grid 0.25 2.5,2.5\n' > "$T/list2.txt"
+"$CK" experiment run "$T/scen2.yaml" --out "$T/scen3" --quiet 2> "$T/bad.err"; rc=$?
+[ "$rc" -eq 2 ] && grep -q "list2.txt: line 1: --start: 2.5,2.5: start is outside the workspace or inside an obstacle" "$T/bad.err" && [ ! -e "$T/scen3" ] && ok || bad "scenario start in an obstacle: exit $rc: $(cat "$T/bad.err")"
+printf 'a maps/a.grid 0.25 0.5,0.5 extra\n' > "$T/list2.txt"
+"$CK" experiment run "$T/scen2.yaml" --out "$T/scen3" --quiet 2> "$T/bad.err"; rc=$?
+[ "$rc" -eq 2 ] && grep -qF "list2.txt: line 1: 'extra': expected NAME FILE RADIUS [START], and nothing after" "$T/bad.err" && ok || bad "scenario line with more fields: exit $rc: $(cat "$T/bad.err")"
 
 echo "engine test: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]
