@@ -3,6 +3,7 @@
 // scenario (its C-space shared by its planners), a row one planner. The demo
 // (`coverkit demo`, the README's first command) is this kind on datasets/data/scenarios.txt.
 #include "engine.h"
+#include "experiment_config.h"
 #include "paper_experiments.h"
 #include "render.h"
 #include "runner.h"
@@ -30,35 +31,19 @@ namespace {
 class ScenarioExperiment : public Experiment {
 public:
   explicit ScenarioExperiment(const std::string& configFile) : file_(configFile) {
-    YAML::Node root;
-    try {
-      root = YAML::LoadFile(configFile);
-    } catch (const YAML::BadFile&) {
-      throw InputError(configFile, "file", "cannot be read");
-    } catch (const YAML::Exception& e) {
-      throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "YAML does not parse: " + e.msg);
-    }
-    if (!root.IsMap()) throw InputError(configFile, "", "expected a YAML mapping with the keys kind, title, scenarios, planners");
-    for (const auto& kv : root) {
-      const std::string key = kv.first.as<std::string>();
-      if (key != "kind" && key != "title" && key != "scenarios" && key != "planners")
-        throw InputError(configFile, key, "line " + std::to_string(kv.first.Mark().line + 1) + ": unknown key (known: kind, title, scenarios, planners)");
-    }
-    try {
-      title_ = root["title"] ? root["title"].as<std::string>() : "Scenarios";
-      if (!root["scenarios"] || !root["scenarios"].IsScalar()) throw InputError(configFile, "scenarios", "expected the path of a scenario list (NAME FILE RADIUS per line)");
-      const fs::path list = fs::path(configFile).parent_path() / root["scenarios"].as<std::string>();
-      readList(list.string());
-      if (root["planners"] && !(root["planners"].IsScalar() && root["planners"].as<std::string>() == "all")) {
-        if (!root["planners"].IsSequence()) throw InputError(configFile, "planners", "expected a list of planner names, or all");
-        for (const auto& p : root["planners"]) planners_.push_back(p.as<std::string>());
-        for (const std::string& p : planners_)
-          if (!planners::Registry::instance().contains(p)) throw InputError(configFile, "planners", "unknown planner '" + p + "'");
-      } else {
-        planners_ = planners::Registry::instance().names();
-      }
-    } catch (const YAML::Exception& e) {
-      throw InputError(configFile, "line " + std::to_string(e.mark.line + 1), "bad value: " + e.msg);
+    const YAML::Node root = loadConfigRoot(configFile, {"kind", "title", "scenarios", "planners"});
+    title_ = configValue<std::string>(root, configFile, "title", "Scenarios");
+    const std::string list = configValue<std::string>(root, configFile, "scenarios", "");
+    if (list.empty()) throw InputError(configFile, "scenarios", "expected the path of a scenario list (NAME FILE RADIUS [START] per line)");
+    readList((fs::path(configFile).parent_path() / list).string());
+    const YAML::Node p = root["planners"];
+    if (p.IsDefined() && !(p.IsScalar() && p.Scalar() == "all")) {
+      planners_ = configValue<std::vector<std::string>>(root, configFile, "planners", {});
+      if (planners_.empty()) throw InputError(configFile, "planners", lineOf(p) + "the list is empty: name planners, or all");
+      for (const std::string& name : planners_)
+        if (!planners::Registry::instance().contains(name)) throw InputError(configFile, "planners", "unknown planner '" + name + "'");
+    } else {
+      planners_ = planners::Registry::instance().names();
     }
     identity_ = "scenarios\n" + datasets::readTextFile(configFile) + "\n" + listText_;
   }
@@ -184,6 +169,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Experiment> scenarioExperiment(const std::string& configFile) { return std::make_unique<ScenarioExperiment>(configFile); }
+std::unique_ptr<Experiment> scenarioExperiment(const std::string& configFile) {
+  return withConfigErrors(configFile, [&]() -> std::unique_ptr<Experiment> { return std::make_unique<ScenarioExperiment>(configFile); });
+}
 
 }  // namespace coverkit::experiments
