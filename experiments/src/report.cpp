@@ -718,9 +718,16 @@ std::vector<std::pair<std::string, std::string>> reportFiles(const std::string& 
   if (wallCol < 0) wallCol = numericColumn("wall_seconds");
   for (std::size_t c = 0; c < t.columns.size() && wallCol < 0; ++c)
     if (isNumeric(t.columns[c]) && isTime(t.columns[c].name) && t.columns[c].name != "peak_rss_mib") wallCol = static_cast<int>(c);
+  // a metric column that is 0 in every row was not measured by this kind (e.g. the coverable region
+  // of the grid experiments): no chart of it
+  auto measured = [&](int c) {
+    for (const Row& r : t.rows)
+      if (t.real(r, t.columns[static_cast<std::size_t>(c)].name) != 0) return true;
+    return false;
+  };
   std::vector<std::size_t> metricCols;
   for (const char* name : {"coverable_coverage", "area_coverage", "subcell_coverage", "swept_area_overlap", "length", "turns", "turning_angle_deg"})
-    if (numericColumn(name) >= 0) metricCols.push_back(static_cast<std::size_t>(numericColumn(name)));
+    if (numericColumn(name) >= 0 && measured(numericColumn(name))) metricCols.push_back(static_cast<std::size_t>(numericColumn(name)));
   if (metricCols.empty()) {
     const std::set<std::string> skip{"case", "row", "world", "repetition", "value"};
     for (std::size_t c = 0; c < t.columns.size(); ++c)
