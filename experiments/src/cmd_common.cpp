@@ -21,11 +21,24 @@ void addMapOptions(CLI::App* c, MapArgs& m, bool needRadius) {
   c->add_flag("--unknown-free", m.unknownFree, "ROS maps: treat unknown pixels as free (default: obstacle)");
 }
 
-void addSpeedOptions(CLI::App* c, SpeedArgs& s) {
+void addSpeedOptions(CLI::App* c, SpeedArgs& s, const std::string& defaultMetrics) {
   c->add_flag("--timings", s.timings, "print wall and CPU time per phase and the peak memory on stderr");
   c->add_option("--threads", s.threads, "threads for the phases that split (metrics' rasters); 0, the default: every core. "
                                         "The results do not depend on it")
       ->check(CLI::Range(0u, 1024u));
+  s.metrics = defaultMetrics;
+  c->add_option("--metrics", s.metrics, "basic (all but the coverable region; covered area rasterised with its bound) or full (every "
+                                        "metric of docs/metrics.md); default " + defaultMetrics + ". The exact validator runs either way")
+      ->check(CLI::IsMember({"basic", "full"}));
+}
+
+MetricOptions metricOptionsFor(const SpeedArgs& s) {
+  MetricOptions o = defaultMetricOptions();
+  if (s.metrics == "basic") {
+    o.coverable = false;
+    o.exactAreaMaxSegments = o.exactAreaMaxSegmentsClear = 0;
+  }
+  return o;
 }
 
 std::map<std::string, std::string> parseParams(const std::vector<std::string>& kv) {

@@ -1,6 +1,7 @@
 #pragma once
 // What several `coverkit` subcommands share: the map and speed options, KEY=VALUE parameters, the
 // problem read from the map options, and the progress bar.
+#include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/path.h>
 
 #include <CLI/CLI.hpp>
@@ -20,12 +21,19 @@ struct MapArgs {
 };
 void addMapOptions(CLI::App* c, MapArgs& m, bool needRadius);
 
-/// --timings, --threads (plan, evaluate).
+/// --timings, --threads, --metrics (plan, evaluate).
 struct SpeedArgs {
   bool timings = false;
   unsigned threads = 0;
+  std::string metrics;   ///< basic or full
 };
-void addSpeedOptions(CLI::App* c, SpeedArgs& s);
+/// `defaultMetrics`: what --metrics is when not given (plan: basic, evaluate: full).
+void addSpeedOptions(CLI::App* c, SpeedArgs& s, const std::string& defaultMetrics);
+
+/// The metric options of --metrics: `full`, every metric of docs/metrics.md (the coverable region,
+/// exact areas up to their limits); `basic`, all but the coverable region, and the covered area
+/// rasterised with its error bound instead of united exactly. The exact validator runs either way.
+MetricOptions metricOptionsFor(const SpeedArgs& s);
 
 /// --param KEY=VALUE... as a map; InputError for an entry without a key or '='.
 std::map<std::string, std::string> parseParams(const std::vector<std::string>& kv);

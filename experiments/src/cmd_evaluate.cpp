@@ -59,7 +59,7 @@ CLI::App* addEvaluateCommand(CLI::App& app) {
   eval->add_option("--start", o.start, "the robot's start X,Y: the path must begin there (default: wherever it begins)");
   eval->add_flag("--json", o.json, "print one JSON object");
   eval->add_flag("--cspace", o.cspace, "also check every piece against the (conservative) C-obstacles: violations of kind \"cspace\"");
-  addSpeedOptions(eval, o.speed);
+  addSpeedOptions(eval, o.speed, "full");
   return eval;
 }
 
@@ -93,7 +93,7 @@ int runEvaluateCommand() {
   timer.begin("validate");
   const ValidationReport v = validatePaths(ctx.problem, doc.paths, vo);
   timer.begin("metrics");
-  MetricOptions mo = defaultMetricOptions();
+  MetricOptions mo = metricOptionsFor(o.speed);
   mo.cspace = evalSpace ? &*evalSpace : nullptr;
   mo.pathsKnownClear = v.valid;
   const Metrics m = computeMetrics(ctx.problem, ctx.cells, doc.paths, mo);

@@ -57,7 +57,7 @@ CLI::App* addPlanCommand(CLI::App& app) {
   plan->add_option("--time-limit", o.timeLimit, "seconds, finite and >= 0 (0: none)");
   plan->add_option("--out", o.out, "output path file (.json, .csv, .geojson)")->required();
   plan->add_option("--picture", o.picture, "picture (.png, .svg)");
-  addSpeedOptions(plan, o.speed);
+  addSpeedOptions(plan, o.speed, "basic");
   return plan;
 }
 
@@ -82,7 +82,7 @@ int runPlanCommand() {
   const RunResult r = runOnce(ctx, o.planner, kv, timeLimit, [&](const std::string& what) {
     progress.step(what);
     timer.begin(phaseName.at(what));
-  });
+  }, metricOptionsFor(o.speed));
   progress.step("writing");
   timer.begin("write");
   datasets::OutputBatch outputs;  // everything made in memory first, then written all or nothing

@@ -60,7 +60,7 @@ def test_planners_are_those_of_the_command_line():
 @pytest.mark.parametrize("planner", [p["name"] for p in coverkit.planners()])
 def test_every_planner_gives_the_command_lines_plan_byte_for_byte(planner, tmp_path):
     out = tmp_path / "cli.json"
-    cli("plan", "--map", data("rooms.grid"), "--radius", "0.125", "--planner", planner, "--out", str(out), check=False)
+    cli("plan", "--map", data("rooms.grid"), "--radius", "0.125", "--planner", planner, "--out", str(out), "--metrics", "full", check=False)
     w = coverkit.load_map(data("rooms.grid"))
     plan = coverkit.plan(w, planner, radius=0.125)
     assert plan.to_json() == out.read_text()
@@ -75,7 +75,7 @@ def test_every_planner_gives_the_command_lines_plan_byte_for_byte(planner, tmp_p
 def test_parameters_start_and_exact_numbers_as_on_the_command_line(tmp_path):
     out = tmp_path / "cli.json"
     cli("plan", "--map", data("pillars.wkt"), "--radius", "0.3", "--planner", "boustrophedon", "--start", "1.5,1.5",
-        "--param", "direction=30", "--out", str(out))
+        "--param", "direction=30", "--out", str(out), "--metrics", "full")
     w = coverkit.load_map(data("pillars.wkt"))
     a = coverkit.plan(w, "boustrophedon", radius=0.3, start=(1.5, 1.5), params={"direction": 30})
     b = coverkit.plan(w, "boustrophedon", radius="3/10", start=("3/2", 1.5), params={"direction": 30.0})
