@@ -30,9 +30,9 @@ struct SpeedArgs {
 /// `defaultMetrics`: what --metrics is when not given (plan: basic, evaluate: full).
 void addSpeedOptions(CLI::App* c, SpeedArgs& s, const std::string& defaultMetrics);
 
-/// The metric options of --metrics: `full`, every metric of docs/metrics.md (the coverable region,
-/// exact areas up to their limits); `basic`, all but the coverable region, and the covered area
-/// rasterised with its error bound instead of united exactly. The exact validator runs either way.
+/// The metric options of --metrics: `full`, every metric of docs/metrics.md; `basic`, all but the
+/// coverable region (two C-spaces, nearly all of the time on real maps). The exact validator runs
+/// either way.
 MetricOptions metricOptionsFor(const SpeedArgs& s);
 
 /// --param KEY=VALUE... as a map; InputError for an entry without a key or '='.
