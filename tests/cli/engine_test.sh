@@ -168,12 +168,8 @@ for r in rows:
     assert r["status"] in ("exact_solution", "partial_coverage", "invalid_start"), r["status"]
     assert r["status"] != "exact_solution" or r["valid"] == "1"
 EOF
-printf 'planners: [full_stc]\nradii: [0.5]\nstarts: ["1,1", nowhere]\n' > "$T/bad-start.yaml"
-"$CK" experiment run "$T/bad-start.yaml" --out "$T/bad-start" --quiet 2> "$T/bad.err"; rc=$?
-[ "$rc" -eq 2 ] && grep -q "bad-start.yaml: starts: line 3: 'nowhere': expected default or X,Y" "$T/bad.err" && [ ! -e "$T/bad-start" ] && ok || bad "bad start: exit $rc: $(cat "$T/bad.err")"
-printf 'worlds: {seeds: [1, x]}\n' > "$T/bad-seeds.yaml"
-"$CK" experiment run "$T/bad-seeds.yaml" --out "$T/bad-seeds" --quiet 2> "$T/bad.err"; rc=$?
-[ "$rc" -eq 2 ] && grep -q "bad-seeds.yaml: worlds.seeds: line 1: x: not a seed" "$T/bad.err" && ok || bad "bad seeds: exit $rc: $(cat "$T/bad.err")"
+expect_bad "bad start" "bad-start.yaml: starts: line 3: 'nowhere': expected default or X,Y" experiment run "$(cfg bad-start 'planners: [full_stc]\nradii: [0.5]\nstarts: ["1,1", nowhere]\n')"
+expect_bad "bad seeds" "bad-seeds.yaml: worlds.seeds: line 1: x: not a seed" experiment run "$(cfg bad-seeds 'worlds: {seeds: [1, x]}\n')"
 # a scenario list with starts (listed cases: map, radius, start); a start in an obstacle is refused first
 printf 'kind: scenarios\nscenarios: list2.txt\nplanners: [full_stc]\n' > "$T/scen2.yaml"
 printf 'a maps/a.grid 0.25 0.5,0.5\nb maps/b.grid 0.25 7.5,2.5\n' > "$T/list2.txt"
@@ -181,11 +177,9 @@ printf 'a maps/a.grid 0.25 0.5,0.5\nb maps/b.grid 0.25 7.5,2.5\n' > "$T/list2.tx
   [ "$(python3 -c 'import csv,sys; print(sum(r["valid"] == "1" for r in csv.DictReader(open(sys.argv[1]))))' "$T/scen2/results.csv")" = 2 ] && ok ||
   bad "scenarios with starts: $(cat "$T/scen2.out")"
 printf 'a maps/a.grid 0.25 2.5,2.5\n' > "$T/list2.txt"
-"$CK" experiment run "$T/scen2.yaml" --out "$T/scen3" --quiet 2> "$T/bad.err"; rc=$?
-[ "$rc" -eq 2 ] && grep -q "list2.txt: line 1: --start: 2.5,2.5: start is outside the workspace or inside an obstacle" "$T/bad.err" && [ ! -e "$T/scen3" ] && ok || bad "scenario start in an obstacle: exit $rc: $(cat "$T/bad.err")"
+expect_bad "scenario start in an obstacle" "list2.txt: line 1: --start: 2.5,2.5: start is outside the workspace or inside an obstacle" experiment run "$T/scen2.yaml"
 printf 'a maps/a.grid 0.25 0.5,0.5 extra\n' > "$T/list2.txt"
-"$CK" experiment run "$T/scen2.yaml" --out "$T/scen3" --quiet 2> "$T/bad.err"; rc=$?
-[ "$rc" -eq 2 ] && grep -qF "list2.txt: line 1: 'extra': expected NAME FILE RADIUS [START], and nothing after" "$T/bad.err" && ok || bad "scenario line with more fields: exit $rc: $(cat "$T/bad.err")"
+expect_bad "scenario line with more fields" "list2.txt: line 1: 'extra': expected NAME FILE RADIUS [START], and nothing after" experiment run "$T/scen2.yaml"
 
 echo "engine test: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]
