@@ -122,7 +122,7 @@ int runExperimentCommand(const std::string& commandLine) {
   if (name == "run") {
     refuse(rest.size() != 1, "experiment run", "", "expected one config file: coverkit experiment run CONFIG.yaml --out DIR");
     refuse(c->count("--config"), "--config", "run", "the config is the argument of run");
-    return runEngine(*experimentFromConfig(rest.front(), "sweep", o.settings), commandLine);
+    return runEngine(*experimentFromConfig(rest.front(), o.settings), commandLine);
   }
   if (name == "report") {
     refuse(rest.size() != 1, "experiment report", "", "expected one folder: coverkit experiment report DIR");
@@ -137,18 +137,18 @@ int runExperimentCommand(const std::string& commandLine) {
     refuse(rest.empty(), "experiment merge", "", "expected the shard folders: coverkit experiment merge --config CONFIG --out DIR SHARD_DIR...");
     refuse(o.config.empty(), "--config", "merge", "give the config the shards ran");
     const EngineOptions e = engineOptions(commandLine);
-    const EngineResult r = mergeShards(*experimentFromConfig(o.config, "sweep", o.settings), rest, o.out, e);
+    const EngineResult r = mergeShards(*experimentFromConfig(o.config, o.settings), rest, o.out, e);
     printEngineResult(r, o.out, e);
     return 0;
   }
   if (name == "sweep") {
     refuse(o.config.empty(), "--config", "", "the sweep needs a config file (or: coverkit experiment run CONFIG)");
-    return runEngine(*experimentFromConfig(o.config, "sweep", o.settings, "sweep"), commandLine);
+    return runEngine(*experimentFromConfig(o.config, o.settings, "sweep"), commandLine);
   }
   const NamedExperiment* n = findNamedExperiment(name);
   if (!n) throw InputError("experiment", name, "unknown experiment (known: " + namesList() + ")");
   // a named experiment: its kind with its shipped config, or another config of that kind
-  return runEngine(*experimentFromConfig(o.config.empty() ? defaultConfig(n->config) : o.config, n->kind, o.settings, n->kind), commandLine);
+  return runEngine(*experimentFromConfig(o.config.empty() ? defaultConfig(n->config) : o.config, o.settings, n->kind), commandLine);
 }
 
 int runDemo(const std::string& outDir, unsigned jobs, bool quiet, const std::string& commandLine) {

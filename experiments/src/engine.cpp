@@ -112,10 +112,11 @@ CaseRows runCase(const Experiment& e, std::size_t i) {
   const std::vector<Row>& rows = output.rows;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::size_t expected = e.columns().size();
+  const std::string key = e.caseKey(i);
   CaseRows out{i, {}, std::move(output.files)};
   for (std::size_t k = 0; k < rows.size(); ++k) {
-    if (rows[k].size() != expected) throw std::logic_error("experiment " + e.kind() + ": case " + e.caseKey(i) + " gave a row of the wrong width");
-    Row r{static_cast<std::int64_t>(i), static_cast<std::int64_t>(k), e.caseKey(i)};
+    if (rows[k].size() != expected) throw std::logic_error("experiment " + e.kind() + ": case " + key + " gave a row of the wrong width");
+    Row r{static_cast<std::int64_t>(i), static_cast<std::int64_t>(k), key};
     r.insert(r.end(), rows[k].begin(), rows[k].end());
     r.push_back(wall);
     r.push_back(peakRssMiB());
@@ -613,7 +614,7 @@ void appendRun(Row& row, const RunResult& r) {
   row.emplace_back(static_cast<std::int64_t>(r.validation.violations.size()));
   Metrics m = r.metrics;
   m.hasCoverable = true;   // the same columns for every row (zeros when not computed)
-  const std::vector<Column> cols = runColumns();
+  static const std::vector<Column> cols = runColumns();   // the same for every row
   const auto fields = datasets::metricFields(m);
   for (std::size_t i = 0; i < fields.size(); ++i) {
     if (cols[i + 3].type == ColumnType::kInteger) row.emplace_back(static_cast<std::int64_t>(fields[i].second));

@@ -60,9 +60,8 @@ const ExperimentKind* findExperimentKind(const std::string& kind) {
   return nullptr;
 }
 
-std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile, const std::string& defaultKind, const ConfigOverrides& overrides,
-                                                 const std::string& requiredKind) {
-  std::string kind = defaultKind;
+std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile, const ConfigOverrides& overrides, const std::string& requiredKind) {
+  std::string kind = requiredKind.empty() ? "sweep" : requiredKind;
   try {
     const YAML::Node root = YAML::LoadFile(configFile);
     if (root.IsMap() && root["kind"].IsDefined()) {

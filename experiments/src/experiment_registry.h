@@ -30,12 +30,11 @@ struct NamedExperiment {
 const std::vector<ExperimentKind>& experimentKinds();
 const std::vector<NamedExperiment>& namedExperiments();
 
-/// The experiment of a config file: its `kind:` (absent: `defaultKind`) made from it, with
-/// `overrides` (InputError naming --KEY when the kind has no such option). A config of another kind
-/// than a non-empty `requiredKind` is refused. Bad config: InputError naming the file and the key,
-/// before anything runs.
-std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile, const std::string& defaultKind = "sweep",
-                                                 const ConfigOverrides& overrides = {}, const std::string& requiredKind = "");
+/// The experiment of a config file: its `kind:` made from it, with `overrides` (InputError naming
+/// --KEY when the kind has no such option). `kind` empty: any kind, `sweep` when the file names
+/// none; else the config must be of that kind (or name none). Bad config: InputError naming the
+/// file and the key, before anything runs.
+std::unique_ptr<Experiment> experimentFromConfig(const std::string& configFile, const ConfigOverrides& overrides = {}, const std::string& kind = "");
 
 /// The kind named `kind`, or nullptr.
 const ExperimentKind* findExperimentKind(const std::string& kind);
