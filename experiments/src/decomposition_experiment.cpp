@@ -90,13 +90,11 @@ public:
     planners::PlanningContext ctx;
     try {
       ctx = planners::makeContext(problem);
-    } catch (const InputError&) {
+    } catch (const InputError& e) {
       // no start for the robot: the world's decomposition figures count, with no plan (planner "")
       Row row = world;
       row.emplace_back(std::string());
-      RunResult none;
-      none.plan.status = PlanStatus::kInvalidStart;
-      appendRun(row, none);
+      appendRun(row, notStarted(e.what()));
       out.rows.push_back(std::move(row));
       return out;
     }

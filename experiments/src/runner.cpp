@@ -111,6 +111,15 @@ double cpuNow() {
 void setThreads(unsigned n) { gThreads = n; }
 unsigned threads() { return gThreads; }
 
+RunResult notStarted(const std::string& why) {
+  RunResult r;
+  r.plan.status = PlanStatus::kInvalidStart;
+  r.plan.message = why;
+  r.validation.valid = false;
+  r.validation.violations.push_back({"start", 0, -1, why});
+  return r;
+}
+
 MetricOptions defaultMetricOptions() {
   MetricOptions o;
   o.coverable = true;

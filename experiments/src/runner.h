@@ -56,6 +56,10 @@ RunResult runOnce(const planners::PlanningContext& context, const std::string& p
                   const std::map<std::string, std::string>& params, double timeLimit = 0,
                   const std::function<void(const std::string&)>& onPhase = {}, const MetricOptions& metricOptions = defaultMetricOptions());
 
+/// A run that could not start: the problem was refused (`why`, e.g. a start in an obstacle) before
+/// any planner ran. Status invalid_start, no path, not valid (one violation of kind "start").
+RunResult notStarted(const std::string& why);
+
 /// The path file's content of a run (what `coverkit plan --out` writes; the Python module's
 /// Plan.to_json).
 datasets::PathDocument pathDocument(const planners::PlanningContext& context, const RunResult& result);

@@ -126,12 +126,11 @@ public:
     std::vector<Row> rows;
     try {
       ctx = planners::makeContext(problem);
-    } catch (const InputError&) {
+    } catch (const InputError& e) {
       if (!start.point) return {};   // the robot does not fit this world: no run
       // a start given in the config that lies outside this world or in an obstacle: every planner's
-      // row says so (status invalid_start), counted as not planned
-      RunResult none;
-      none.plan.status = PlanStatus::kInvalidStart;
+      // row says so (status invalid_start, not valid), counted as not planned
+      const RunResult none = notStarted(e.what());
       for (const std::string& p : ec_.planners)
         for (int rep = 0; rep < repetitions_; ++rep) {
           Row row{mapName, world, vary_, values_[si], p, static_cast<std::int64_t>(rep), r.get_d(), start.text};

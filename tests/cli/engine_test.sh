@@ -157,16 +157,19 @@ fi
 
 # starts and listed seeds: a case per world, setting and start; a start in an obstacle of a world is
 # a row per planner with status invalid_start; the worlds are the seeds listed
-printf 'planners: [full_stc]\nradii: [0.5]\nstarts: [default, "1,1", "5.5,4.5"]\nworlds: {seeds: [7, 3], width: 12, height: 10, obstacles: 4}\n' > "$T/starts.yaml"
-"$CK" experiment run "$T/starts.yaml" --out "$T/starts" --quiet > "$T/starts.out" 2>&1 && [ "$(rows "$T/starts" | tail -1)" = "cases: 6" ] &&
+printf 'planners: [full_stc]\nradii: [0.5]\nstarts: [default, "1,1", "5.5,4.5", "100,100"]\nworlds: {seeds: [7, 3], width: 12, height: 10, obstacles: 4}\n' > "$T/starts.yaml"
+"$CK" experiment run "$T/starts.yaml" --out "$T/starts" --quiet > "$T/starts.out" 2>&1 && [ "$(rows "$T/starts" | tail -1)" = "cases: 8" ] &&
   python3 - "$T/starts/results.csv" <<'EOF' && ok || bad "starts and seeds: $(cat "$T/starts.out") $(csv_rows "$T/starts" | cut -c1-120)"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-assert [r["world"] for r in rows][::3] == ["7", "3"], [r["world"] for r in rows]
-assert [r["start"] for r in rows[:3]] == ["default", "1,1", "5.5,4.5"]
+assert [r["world"] for r in rows][::4] == ["7", "3"], [r["world"] for r in rows]
+assert [r["start"] for r in rows[:4]] == ["default", "1,1", "5.5,4.5", "100,100"]
+assert all(r["status"] == "invalid_start" for r in rows if r["start"] == "100,100")   # outside the world: not planned
 for r in rows:
     assert r["status"] in ("exact_solution", "partial_coverage", "invalid_start"), r["status"]
     assert r["status"] != "exact_solution" or r["valid"] == "1"
+    assert r["status"] != "invalid_start" or (r["valid"] == "0" and r["violations"] == "1")   # no plan is not a valid plan
+assert [r["start"] for r in rows if r["status"] == "invalid_start"] == ["5.5,4.5", "100,100", "100,100"]
 EOF
 expect_bad "bad start" "bad-start.yaml: starts: line 3: 'nowhere': expected default or X,Y" experiment run "$(cfg bad-start 'planners: [full_stc]\nradii: [0.5]\nstarts: ["1,1", nowhere]\n')"
 expect_bad "bad seeds" "bad-seeds.yaml: worlds.seeds: line 1: x: not a seed" experiment run "$(cfg bad-seeds 'worlds: {seeds: [1, x]}\n')"
