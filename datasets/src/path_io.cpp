@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -61,18 +62,21 @@ std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
           {"covered_subcells", static_cast<double>(m.coveredSubcells)},
           {"entered_subcells", static_cast<double>(m.enteredSubcells)},
           {"revisited_subcells", static_cast<double>(m.revisitedSubcells)},
-          {"overlap_ratio", m.overlapRatio},
-          {"free_area", m.freeArea},
-          {"covered_area", m.coveredArea},
-          {"area_coverage", m.areaCoverage},
-          {"area_coverage_error", m.areaCoverageError},
-          {"area_exact", m.areaMethod == "exact" ? 1.0 : 0.0},
-          {"swept_area_overlap", m.sweptAreaOverlap},
-          {"length", m.length},
+          {"overlap_ratio", m.overlapRatio}};
+  if (m.hasArea) {
+    f.emplace_back("free_area", m.freeArea);
+    f.emplace_back("covered_area", m.coveredArea);
+    f.emplace_back("area_coverage", m.areaCoverage);
+    f.emplace_back("area_coverage_error", m.areaCoverageError);
+    f.emplace_back("area_exact", m.areaMethod == "exact" ? 1.0 : 0.0);
+    f.emplace_back("swept_area_overlap", m.sweptAreaOverlap);
+  }
+  for (auto& kv : std::vector<std::pair<std::string, double>>{{"length", m.length},
           {"turns", static_cast<double>(m.turns)},
           {"turning_angle_deg", m.turningAngleDeg},
           {"time_s", m.time},
-          {"segments", static_cast<double>(m.segments)}};
+          {"segments", static_cast<double>(m.segments)}})
+    f.push_back(std::move(kv));
   if (m.hasCoverable) {
     f.emplace_back("coverable_area", m.coverableArea);
     f.emplace_back("coverable_area_error", m.coverableAreaError);
@@ -304,6 +308,77 @@ void writeFileAtomically(const std::string& file, const std::string& content) {
   batch.commit();
 }
 
+namespace {
+
+/// What nlohmann's dump(1) writes for `v` at depth `depth` of a document.
+void appendDumped(std::string& out, const json& v, int depth) {
+  const std::string t = v.dump(1);
+  for (char c : t) {
+    out += c;
+    if (c == '\n') out.append(static_cast<std::size_t>(depth), ' ');
+  }
+}
+
+/// A number as nlohmann writes it (its own shortest round-trip digits; null when not finite).
+void appendNumber(std::string& out, double x) {
+  if (!std::isfinite(x)) {
+    out += "null";
+    return;
+  }
+  std::array<char, 64> buf{};
+  const char* end = nlohmann::detail::to_chars(buf.data(), buf.data() + buf.size(), x);
+  out.append(buf.data(), static_cast<std::size_t>(end - buf.data()));
+}
+
+/// `"key": [x, y]` at depth `depth`, as dump(1) writes it.
+void appendPointMember(std::string& out, const char* key, PointD p, int depth) {
+  const std::string in(static_cast<std::size_t>(depth), ' ');
+  out += in + "\"" + key + "\": [\n" + in + " ";
+  appendNumber(out, p.x);
+  out += ",\n" + in + " ";
+  appendNumber(out, p.y);
+  out += "\n" + in + "]";
+}
+
+/// The robots array at depth 1, as dump(1) of robotsJson would write it: written directly, because
+/// building a JSON tree of a million segments first took most of `plan`'s time on large maps.
+void appendRobots(std::string& out, const std::vector<Path>& paths) {
+  if (paths.empty()) {
+    out += "[]";
+    return;
+  }
+  out += "[\n";
+  for (std::size_t r = 0; r < paths.size(); ++r) {
+    const Path& p = paths[r];
+    out += "  {\n   \"segments\": ";
+    if (p.segments.empty()) out += "[]";
+    else {
+      out += "[\n";
+      for (std::size_t i = 0; i < p.segments.size(); ++i) {
+        const PathSegment& g = p.segments[i];
+        out += "    {\n";
+        if (g.kind == PathSegment::Kind::kArc) {
+          out += g.ccw ? "     \"ccw\": true,\n" : "     \"ccw\": false,\n";
+          appendPointMember(out, "center", g.center, 5);
+          out += ",\n";
+        }
+        appendPointMember(out, "from", g.from, 5);
+        out += ",\n";
+        appendPointMember(out, "to", g.to, 5);
+        out += g.kind == PathSegment::Kind::kArc ? ",\n     \"type\": \"arc\"\n    }" : ",\n     \"type\": \"line\"\n    }";
+        out += i + 1 < p.segments.size() ? ",\n" : "\n";
+      }
+      out += "   ]";
+    }
+    out += ",\n";
+    appendPointMember(out, "start", p.start, 3);
+    out += r + 1 < paths.size() ? "\n  },\n" : "\n  }\n";
+  }
+  out += " ]";
+}
+
+}  // namespace
+
 std::string pathJson(const PathDocument& doc) {
   json j;
   j["format"] = "coverkit.path/1";
@@ -313,20 +388,23 @@ std::string pathJson(const PathDocument& doc) {
   j["robot_radius_exact"] = doc.robotRadius.get_str();
   j["cell_size"] = doc.cellSize.get_d();
   j["cell_size_exact"] = doc.cellSize.get_str();
-  json robots = json::array();
-  for (const Path& p : doc.paths) {
-    json segs = json::array();
-    for (const PathSegment& s : p.segments) segs.push_back(segmentJson(s));
-    robots.push_back({{"start", pt(p.start)}, {"segments", segs}});
-  }
-  j["robots"] = robots;
+  j["robots"] = nullptr;   // written by appendRobots, in its place among the sorted keys
   json m = json::object();
   for (auto& [k, v] : doc.metrics) m[k] = v;
   j["metrics"] = m;
   json st = json::object();
   for (auto& [k, v] : doc.statistics) st[k] = v;
   j["statistics"] = st;
-  return j.dump(1) + "\n";
+  // j.dump(1), with the robots written directly
+  std::string out = "{\n";
+  std::size_t k = 0;
+  for (auto it = j.begin(); it != j.end(); ++it, ++k) {
+    out += " " + json(it.key()).dump() + ": ";
+    if (it.key() == "robots") appendRobots(out, doc.paths);
+    else appendDumped(out, it.value(), 1);
+    out += k + 1 < j.size() ? ",\n" : "\n";
+  }
+  return out + "}\n";
 }
 
 std::string pathFileContent(const std::string& file, const PathDocument& doc) {

@@ -37,7 +37,7 @@ nlohmann::json evaluationJson(const ValidationReport& v, const Metrics& m) {
   for (const auto& x : v.violations)
     j["violations"].push_back({{"kind", x.kind}, {"robot", x.robot}, {"segment", x.segment}, {"detail", x.detail}});
   for (auto& [k, val] : datasets::metricFields(m)) j[k] = val;
-  j["area_method"] = m.areaMethod;
+  if (m.hasArea) j["area_method"] = m.areaMethod;
   return j;
 }
 
@@ -46,7 +46,7 @@ void printEvaluation(const ValidationReport& v, const Metrics& m) {
   for (const auto& x : v.violations)
     std::cout << "  violation [" << x.kind << "] robot " << x.robot << " segment " << x.segment << ": " << x.detail << "\n";
   for (auto& [k, val] : datasets::metricFields(m)) std::cout << "  " << std::left << std::setw(22) << k << formatDouble(val) << "\n";
-  std::cout << "  area_method           " << m.areaMethod << "\n";
+  if (m.hasArea) std::cout << "  area_method           " << m.areaMethod << "\n";
 }
 
 }  // namespace

@@ -598,7 +598,7 @@ std::string Table::text(const Row& r, const std::string& name) const {
 std::vector<Column> runColumns() {
   std::vector<Column> c{{"status", ColumnType::kText}, {"valid", ColumnType::kInteger}, {"violations", ColumnType::kInteger}};
   Metrics none;
-  none.hasCoverable = true;
+  none.hasArea = none.hasCoverable = true;
   for (const auto& [name, value] : datasets::metricFields(none)) {
     const bool count = name == "free_subcells" || name == "covered_subcells" || name == "entered_subcells" || name == "revisited_subcells" ||
                        name == "area_exact" || name == "turns" || name == "segments";
@@ -613,7 +613,7 @@ void appendRun(Row& row, const RunResult& r) {
   row.emplace_back(static_cast<std::int64_t>(r.validation.valid ? 1 : 0));
   row.emplace_back(static_cast<std::int64_t>(r.validation.violations.size()));
   Metrics m = r.metrics;
-  m.hasCoverable = true;   // the same columns for every row (zeros when not computed)
+  m.hasArea = m.hasCoverable = true;   // the same columns for every row (zeros when not computed)
   static const std::vector<Column> cols = runColumns();   // the same for every row
   const auto fields = datasets::metricFields(m);
   for (std::size_t i = 0; i < fields.size(); ++i) {

@@ -127,6 +127,14 @@ MetricOptions defaultMetricOptions() {
   return o;
 }
 
+MetricOptions metricOptionsForLevel(const std::string& level) {
+  MetricOptions o = defaultMetricOptions();
+  if (level == "basic") o.area = o.coverable = false;
+  else if (level == "area") o.coverable = false;
+  else if (level != "full") throw std::invalid_argument("metric level " + level + " not in {basic,area,full}");
+  return o;
+}
+
 void PhaseTimer::begin(const std::string& phase) {
   end();
   rows_.push_back({phase, 0, 0});

@@ -24,6 +24,11 @@ struct RunResult {
 /// `threads()` threads.
 MetricOptions defaultMetricOptions();
 
+/// `--metrics LEVEL`: `basic` (sub-cells, length, turns, time: linear in the path and the grid),
+/// `area` (and the covered area, exact or rasterised with a bound), `full` (and the coverable
+/// region, two more C-spaces: defaultMetricOptions()). std::invalid_argument for another name.
+MetricOptions metricOptionsForLevel(const std::string& level);
+
 /// Threads for the heavy phases that split (the metrics' rasters): `--threads`, 0 = every core.
 /// Results are the same for any number.
 void setThreads(unsigned n);

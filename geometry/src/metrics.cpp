@@ -113,6 +113,8 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   m.time = o.speed > 0 ? m.length / o.speed : 0;
 
   lap("sub-cells, length, turns");
+  if (!o.area) return m;
+  m.hasArea = true;
   m.freeArea = freeArea(problem.workspace).get_d();
   double area = 0;
   // A path the validator accepts sweeps only closure(F): the exact area can skip clipping to F,

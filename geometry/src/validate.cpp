@@ -117,6 +117,47 @@ I lbPointSeg(const IPoint& p, const IPoint& a, const IPoint& b) {
   return CGAL::abs(icross(ab, ap)) / CGAL::sqrt(l2);  // the distance to the line: ≤ every branch
 }
 
+// The segment filter runs on unprotected intervals (Interval_nt_advanced) under one rounding-mode
+// guard per edge: the protected type switches the FPU mode at every operation, which was most of
+// the validator's time on large grid maps.
+using IA = CGAL::Interval_nt_advanced;
+struct IPointA {
+  IA x, y;
+};
+IPointA toAdvanced(const IPoint& p) { return {IA(p.x.inf(), p.x.sup()), IA(p.y.inf(), p.y.sup())}; }
+inline IPointA asub(const IPointA& a, const IPointA& b) { return {a.x - b.x, a.y - b.y}; }
+inline IA across(const IPointA& a, const IPointA& b) { return a.x * b.y - a.y * b.x; }
+inline IA adot(const IPointA& a, const IPointA& b) { return a.x * b.x + a.y * b.y; }
+
+/// ≤ the squared distance from p to segment ab; 0 when ab may be degenerate. Squared, so that
+/// points given as doubles give exact bounds wherever the products are exact in doubles (a grid's
+/// coordinates): a piece at exactly r from an edge is then accepted here, without the exact test.
+/// Call under CGAL::Protect_FPU_rounding<true>.
+IA lbPointSeg2(const IPointA& p, const IPointA& a, const IPointA& b) {
+  const IPointA ab = asub(b, a), ap = asub(p, a);
+  const IA l2 = adot(ab, ab);
+  if (!CGAL::certainly(l2 > 0)) return IA(0);
+  const IA t = adot(ap, ab);
+  if (CGAL::certainly(t <= 0)) return adot(ap, ap);
+  if (CGAL::certainly(t >= l2)) {
+    const IPointA bp = asub(p, b);
+    return adot(bp, bp);
+  }
+  return CGAL::square(across(ab, ap)) / l2;  // to the line: ≤ every branch
+}
+
+/// ≤ the squared distance between segments ab and cd; 0 when they may cross. Call under
+/// CGAL::Protect_FPU_rounding<true>.
+IA lbSegSeg2(const IPointA& a, const IPointA& b, const IPointA& c, const IPointA& d) {
+  auto sameSide = [](const IA& u, const IA& v) {
+    return (CGAL::certainly(u > 0) && CGAL::certainly(v > 0)) || (CGAL::certainly(u < 0) && CGAL::certainly(v < 0));
+  };
+  const IA o1 = across(asub(b, a), asub(c, a)), o2 = across(asub(b, a), asub(d, a));
+  const IA o3 = across(asub(d, c), asub(a, c)), o4 = across(asub(d, c), asub(b, c));
+  if (!sameSide(o1, o2) && !sameSide(o3, o4)) return IA(0);
+  return CGAL::min(CGAL::min(lbPointSeg2(a, c, d), lbPointSeg2(b, c, d)), CGAL::min(lbPointSeg2(c, a, b), lbPointSeg2(d, a, b)));
+}
+
 /// ≤ the distance between segments ab and cd; 0 when they may cross.
 I lbSegSeg(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d) {
   auto sameSide = [](const I& u, const I& v) {
@@ -194,36 +235,18 @@ public:
 
   /// Returns an empty string when clear, else what is wrong.
   std::string segment(const Point& a, const Point& b) {
-    if (!insideChecked_) {
-      insideChecked_ = true;
-      if (!strictlyInside(w_, a)) return "starts outside the workspace or on its boundary";
-    }
-    const double ax = a.x.get_d(), ay = a.y.get_d(), bx = b.x.get_d(), by = b.y.get_d();
-    // the margin covers double rounding at the piece's own magnitude too (a far end at 1e20)
-    const double m = rd_ + 1e-7 * scale_ + 1e-12 * std::max({std::abs(ax), std::abs(ay), std::abs(bx), std::abs(by)});
-    const bool filter = filterable({ax, ay, bx, by});
-    std::string bad;
-    KS s(kp(a), kp(b));
-    const IPoint A = ip(a), B = ip(b);
-    const I R = iv(r_);
-    index_.query(std::min(ax, bx) - m, std::min(ay, by) - m, std::max(ax, bx) + m, std::max(ay, by) + m,
-                 [&](const detail::IndexedEdge& e) {
-                   if (!bad.empty()) return;
-                   if (filter && detail::segSegDist(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m) return;
-                   if (filter && filtered_ && CGAL::certainly(lbSegSeg(A, B, ip(*e.a), ip(*e.b)) >= R)) return;
-                   ++exactTests;
-                   KS es(kp(*e.a), kp(*e.b));
-                   const mpq_class d2 = (a == b) ? CGAL::squared_distance(kp(a), es) : CGAL::squared_distance(s, es);
-                   if (d2 < r2_) {
-                     std::ostringstream os;
-                     os << "disc meets an obstacle: distance " << std::sqrt(d2.get_d()) << " < r = " << rd_
-                        << " to boundary edge (" << e.ax << "," << e.ay << ")-(" << e.bx << "," << e.by << ")";
-                     bad = os.str();
-                   }
-                 });
-    return bad;
+    return segment({a.x.get_d(), a.y.get_d()}, {b.x.get_d(), b.y.get_d()}, toAdvanced(ip(a)), toAdvanced(ip(b)),
+                   [&] { return std::pair<Point, Point>(a, b); });
+  }
+  /// The same for a piece given by doubles (a path's): their intervals are exact, and the exact
+  /// points are made only when an edge needs the exact test.
+  std::string segment(PointD a, PointD b) {
+    return segment(a, b, IPointA{IA(a.x), IA(a.y)}, IPointA{IA(b.x), IA(b.y)},
+                   [&] { return std::pair<Point, Point>(exactPoint(a), exactPoint(b)); });
   }
 
+  /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the straight jump
+  /// from where the arc meets that ray to t (t lies on the circle only within a relative 1e-9).
   /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the straight jump
   /// from where the arc meets that ray to t (t lies on the circle only within a relative 1e-9).
   std::string arc(const Point& f, const Point& t, const Point& c, bool ccw) {
@@ -329,8 +352,72 @@ public:
   }
 
 private:
+  /// `da`, `db`: the ends as doubles (rounded when the ends are not doubles); `A`, `B`: intervals
+  /// holding the exact ends; `exact()`: the exact ends, asked for only when needed.
+  template <class ExactEnds>
+  std::string segment(PointD da, PointD db, const IPointA& A, const IPointA& B, ExactEnds&& exact) {
+    std::optional<std::pair<Point, Point>> ends;
+    auto exactEnds = [&]() -> const std::pair<Point, Point>& {
+      if (!ends) ends = exact();
+      return *ends;
+    };
+    if (!insideChecked_) {
+      insideChecked_ = true;
+      if (!strictlyInside(w_, exactEnds().first)) return "starts outside the workspace or on its boundary";
+    }
+    const double ax = da.x, ay = da.y, bx = db.x, by = db.y;
+    // the margin covers double rounding at the piece's own magnitude too (a far end at 1e20)
+    const double m = rd_ + 1e-7 * scale_ + 1e-12 * std::max({std::abs(ax), std::abs(ay), std::abs(bx), std::abs(by)});
+    const bool filter = filterable({ax, ay, bx, by});
+    std::string bad;
+    std::optional<KS> s;
+    const detail::IndexedEdge* first = index_.edges().data();
+    index_.query(std::min(ax, bx) - m, std::min(ay, by) - m, std::max(ax, bx) + m, std::max(ay, by) + m,
+                 [&](const detail::IndexedEdge& e) {
+                   if (!bad.empty()) return;
+                   if (filter && detail::segSegDist(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m) return;
+                   if (filter && filtered_) {
+                     const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - first));
+                     CGAL::Protect_FPU_rounding<true> upward;
+                     if (CGAL::certainly(lbSegSeg2(A, B, ea, eb) >= R2_)) return;
+                   }
+                   ++exactTests;
+                   const auto& [a, b] = exactEnds();
+                   if (!s) s.emplace(kp(a), kp(b));
+                   KS es(kp(*e.a), kp(*e.b));
+                   const mpq_class d2 = (a == b) ? CGAL::squared_distance(kp(a), es) : CGAL::squared_distance(*s, es);
+                   if (d2 < r2_) {
+                     std::ostringstream os;
+                     os << "disc meets an obstacle: distance " << std::sqrt(d2.get_d()) << " < r = " << rd_
+                        << " to boundary edge (" << e.ax << "," << e.ay << ")-(" << e.bx << "," << e.by << ")";
+                     bad = os.str();
+                   }
+                 });
+    return bad;
+  }
+
+  /// The intervals of edge i's ends, converted from the rationals once.
+  const std::pair<IPointA, IPointA>& edgeIntervals(std::size_t i) {
+    if (edgeI_.empty()) {
+      edgeI_.resize(index_.edges().size());
+      edgeIReady_.assign(index_.edges().size(), 0);
+    }
+    if (!edgeIReady_[i]) {
+      const detail::IndexedEdge& e = index_.edges()[i];
+      edgeI_[i] = {toAdvanced(ip(*e.a)), toAdvanced(ip(*e.b))};
+      edgeIReady_[i] = 1;
+    }
+    return edgeI_[i];
+  }
+
   const Workspace& w_;
   Rational r_, r2_;
+  IA R2_ = [this] {
+    const I q = iv(r2_);
+    return IA(q.inf(), q.sup());
+  }();
+  std::vector<std::pair<IPointA, IPointA>> edgeI_;
+  std::vector<char> edgeIReady_;
   double rd_, scale_ = 1;
   detail::EdgeIndex index_;
   bool insideChecked_ = false;
@@ -393,7 +480,7 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
     }
     PointD cur = path.start;
     if (path.segments.empty()) {
-      std::string why = check.segment(exactPoint(cur), exactPoint(cur));
+      std::string why = check.segment(cur, cur);
       if (!why.empty()) add({"clearance", R, -1, why});
       continue;
     }
@@ -410,11 +497,11 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
       if (gap > o.continuityTolerance) {
         add({"continuity", R, S, "gap of " + formatDouble(gap) + " between " + fmt(cur) + " and " + fmt(s.from)});
       } else if (gap > 0) {
-        std::string why = check.segment(exactPoint(cur), exactPoint(s.from));
+        std::string why = check.segment(cur, s.from);
         if (!why.empty()) add({"clearance", R, S, "joint: " + why});
       }
       std::string why = s.kind == PathSegment::Kind::kLine
-                            ? check.segment(exactPoint(s.from), exactPoint(s.to))
+                            ? check.segment(s.from, s.to)
                             : check.arc(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
       if (!why.empty()) add({s.kind == PathSegment::Kind::kArc && why.find("circle") != std::string::npos ? "arc" : "clearance",
                              R, S, why});

@@ -371,20 +371,26 @@ has_phases() { local f="$1"; shift; for phase in "$@"; do grep -q "^ *$phase" "$
 "$CK" evaluate --map "$DATA/rooms.grid" --path "$T/t0.json" --json --threads 1 > "$T/e1.out" 2> /dev/null &&
   "$CK" evaluate --map "$DATA/rooms.grid" --path "$T/t0.json" --json --threads 2 --timings > "$T/e2.out" 2> "$T/e2.err" &&
   cmp -s "$T/e1.out" "$T/e2.out" && grep -q "^  metrics" "$T/e2.err" && grep -q "^  validate" "$T/e2.err" && ok || bad "evaluate --timings --threads"
-# --metrics: plan's default is basic (no coverable region), evaluate's full; the exact validator
-# runs either way, and the path and the other metrics are the same
+# --metrics: plan's default is basic (no areas), area adds the covered area, full (evaluate's
+# default) the coverable region; the exact validator runs at every level, and the path and the
+# metrics a level shares with the next are the same
 "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/b0.json" --timings > /dev/null 2> "$T/b0.err" &&
-  has_phases "$T/b0.err" validate metrics && ! grep -q "coverable region" "$T/b0.err" &&
-  python3 - "$T/b0.json" "$T/t0.json" <<'EOF' &&
+  "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/a0.json" --metrics area > /dev/null 2> /dev/null &&
+  has_phases "$T/b0.err" validate metrics && ! grep -q "coverable region" "$T/b0.err" && ! grep -q "covered area" "$T/b0.err" &&
+  python3 - "$T/b0.json" "$T/a0.json" "$T/t0.json" <<'EOF' &&
 import json, sys
-basic, full = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
-assert basic["robots"] == full["robots"]                      # the same path
-assert "coverable_coverage" not in basic["metrics"] and "coverable_coverage" in full["metrics"]
-assert basic["metrics"] == {k: v for k, v in full["metrics"].items() if not k.startswith("coverable")}
+basic, area, full = (json.load(open(f)) for f in sys.argv[1:4])
+assert basic["robots"] == area["robots"] == full["robots"]    # the same path
+areas = {"free_area", "covered_area", "area_coverage", "area_coverage_error", "area_exact", "swept_area_overlap"}
+assert not areas & set(basic["metrics"]) and areas <= set(area["metrics"])
+assert "coverable_coverage" not in area["metrics"] and "coverable_coverage" in full["metrics"]
+assert basic["metrics"] == {k: v for k, v in area["metrics"].items() if k not in areas}
+assert area["metrics"] == {k: v for k, v in full["metrics"].items() if not k.startswith("coverable")}
 EOF
-  ok || bad "plan --metrics basic (the default): $(head -c 300 "$T/b0.json")"
+  ok || bad "plan --metrics basic (the default) and area: $(head -c 300 "$T/b0.json")"
 "$CK" evaluate --map "$DATA/rooms.grid" --path "$T/b0.json" --json --metrics basic > "$T/eb.out" 2> /dev/null && grep -q '"valid": true' "$T/eb.out" &&
-  ! grep -q '"coverable_coverage"' "$T/eb.out" && grep -q '"coverable_coverage"' "$T/e1.out" && ok || bad "evaluate --metrics basic"
+  ! grep -q '"coverable_coverage"' "$T/eb.out" && ! grep -q '"area_method"' "$T/eb.out" && grep -q '"coverable_coverage"' "$T/e1.out" &&
+  grep -q '"area_method"' "$T/e1.out" && ok || bad "evaluate --metrics basic"
 expect_bad "plan: --metrics unknown" "--metrics" plan --map "$T/room.wkt" --radius 0.25 --planner stc --metrics most --out "$T/out.json"
 expect_bad "plan: --threads not a number" "--threads" plan --map "$T/room.wkt" --radius 0.25 --planner stc --threads many --out "$T/out.json"
 

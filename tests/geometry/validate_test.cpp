@@ -149,3 +149,45 @@ TEST(Validator, IntervalFilterNeverChangesAVerdict) {
   EXPECT_GT(clear, 20);
   EXPECT_GT(blocked, 20);
 }
+
+// A path's pieces come as doubles: the validator bounds their squared distances on intervals
+// without converting them to rationals first. On a grid map the pieces run at exactly r from the
+// obstacle edges (Full-STC beside a blocked pixel), where those bounds are exact: the verdict must
+// still be the exact test's, at r and one ulp either side, for lines along, across and slanted.
+TEST(Validator, PiecesAsDoublesAtExactlyRGetTheExactTestsVerdict) {
+  Workspace w;
+  Region reg;
+  reg.outer = {{0, 0}, {20, 0}, {20, 20}, {0, 20}};
+  for (int k = 0; k < 4; ++k) {   // unit pixels blocked, cw holes
+    const Rational x(3 + 4 * k), y(5 + 3 * k);
+    reg.holes.push_back({{x, y}, {x, y + 1}, {x + 1, y + 1}, {x + 1, y}});
+  }
+  w.regions.push_back(reg);
+  Problem p;
+  p.workspace = w;
+  p.robots.push_back({Rational(1, 2), std::nullopt});
+  ClearanceChecker exact(w, Rational(1, 2), false);
+  auto P = [](PointD q) { return Point{exactFromDouble(q.x), exactFromDouble(q.y)}; };
+  std::mt19937 rng(11);
+  int clear = 0, blocked = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const auto& hole = reg.holes[static_cast<std::size_t>(rng() % 4)];
+    const double hx = hole[0].x.get_d(), hy = hole[0].y.get_d();
+    const double off[] = {std::nextafter(0.5, 0.0), 0.5, std::nextafter(0.5, 1.0), 0.25, 1.5};
+    const double d = off[rng() % 5];
+    const double along0 = hx - 3 + static_cast<double>(rng() % 8) * 0.5, along1 = along0 + 0.5 + static_cast<double>(rng() % 6);
+    PointD a, b;
+    switch (rng() % 4) {
+      case 0: a = {along0, hy - d}; b = {along1, hy - d}; break;                 // below, along the bottom edge
+      case 1: a = {hx + 1 + d, hy - 2 + along0 - hx}; b = {hx + 1 + d, hy - 2 + along1 - hx}; break;  // right side
+      case 2: a = {hx - d, hy - 2}; b = {hx - d - 1e-9, hy + 3}; break;          // left, slightly slanted
+      default: a = {hx - d, hy + 0.5}; b = {hx - d, hy + 0.5}; break;            // a point
+    }
+    const bool byExact = exact.clear(P(a), P(b));
+    const ValidationReport rep = validatePaths(p, {line({a, b})});
+    ASSERT_EQ(rep.valid, byExact) << "trial " << trial << " (" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ")";
+    (byExact ? clear : blocked) += 1;
+  }
+  EXPECT_GT(clear, 100);
+  EXPECT_GT(blocked, 100);
+}

@@ -17,6 +17,10 @@ struct MetricOptions {
   std::size_t exactAreaMaxSegments = 3000;        ///< above this, area coverage is rasterised...
   std::size_t exactAreaMaxSegmentsClear = 20000;  ///< ...unless the path is clear (no clip to F needed)
   std::size_t rasterMaxPixels = 4'000'000;
+  /// Measure the covered area (F ∩ swept: exact, or rasterised with a bound) and what derives from
+  /// it. Off for `--metrics basic`: on large maps it is most of `plan`'s time (docs/performance.md).
+  /// The coverable region needs it: `coverable` without `area` measures neither.
+  bool area = true;
   /// Also measure against the coverable region (the starts' closed components of C-free ⊕ disc(r),
   /// docs/metrics.md); builds two C-spaces (radius r − δ and 2r − 2δ), so it is off unless asked for.
   bool coverable = false;
@@ -40,6 +44,7 @@ struct Metrics {
   std::size_t enteredSubcells = 0;     ///< distinct sub-cells entered (any state)
   std::size_t revisitedSubcells = 0;   ///< sub-cells entered more than once
   double overlapRatio = 0;             ///< revisited / entered
+  bool hasArea = false;                ///< the covered area and the five below it were computed
   double freeArea = 0;                 ///< area(F)
   double coveredArea = 0;              ///< area(F ∩ swept)
   double areaCoverage = 0;             ///< coveredArea / freeArea
