@@ -17,8 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <stdexcept>
+#include <thread>
 
 namespace coverkit {
 
@@ -286,7 +288,8 @@ struct ClosedHelpers {
   double delta = 0, epsPrime = 0;
 };
 
-ClosedHelpers closedHelpers(const Workspace& w, const Rational& r, double relativeEps, bool wantInner) {
+/// `threads` (0: every core): with more than one, the two helpers are built at once.
+ClosedHelpers closedHelpers(const Workspace& w, const Rational& r, double relativeEps, bool wantInner, unsigned threads = 1) {
   ClosedHelpers h;
   const Box b = w.bbox();
   const double extent = std::max(std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d()), 1e-12);
@@ -298,8 +301,30 @@ ClosedHelpers closedHelpers(const Workspace& w, const Rational& r, double relati
     delta = 4 * exactFromDouble(h.epsPrime);  // > the helpers' eps (relEps·extent rounds within an ulp of eps')
     h.delta = delta.get_d();
   }
-  h.joined = std::make_unique<CSpace>(w, Rational(r - delta), relEps);
-  if (wantInner) h.inner = std::make_unique<CSpace>(w, Rational(2 * r - 2 * delta), relEps);
+  const Rational rJoined = r - delta, rInner = 2 * r - 2 * delta;
+  const unsigned cores = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
+  if (wantInner && cores > 1) {
+    // each C-space is built from the shared, read-only workspace into its own objects
+    std::exception_ptr failed;
+    std::thread second([&] {
+      try {
+        h.inner = std::make_unique<CSpace>(w, rInner, relEps);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+    });
+    try {
+      h.joined = std::make_unique<CSpace>(w, rJoined, relEps);
+    } catch (...) {
+      second.join();
+      throw;
+    }
+    second.join();
+    if (failed) std::rethrow_exception(failed);
+    return h;
+  }
+  h.joined = std::make_unique<CSpace>(w, rJoined, relEps);
+  if (wantInner) h.inner = std::make_unique<CSpace>(w, rInner, relEps);
   return h;
 }
 
@@ -367,7 +392,7 @@ double coverableArea(const Workspace& w, const Rational& radius, const std::vect
                      double relativeEps, unsigned threads) {
   errorBound = 0;
   if (radius < 0) throw InputError(w.name, "radius", "robot radius must be >= 0");
-  const ClosedHelpers h = closedHelpers(w, radius, relativeEps, true);
+  const ClosedHelpers h = closedHelpers(w, radius, relativeEps, true, threads);
   return coverableFrom(w, radius, *h.joined, *h.inner, h.delta, h.epsPrime, startComponents(*h.joined, starts), errorBound, threads);
 }
 
@@ -388,7 +413,7 @@ double CSpace::closedMargin() const {
 
 double CSpace::coverableArea(const std::vector<Point>& starts, double& errorBound, unsigned threads) const {
   if (!impl_->inner) {
-    ClosedHelpers h = closedHelpers(impl_->workspace, impl_->radius, impl_->relativeEps, true);
+    ClosedHelpers h = closedHelpers(impl_->workspace, impl_->radius, impl_->relativeEps, true, threads);
     impl_->joined = std::move(h.joined);
     impl_->inner = std::move(h.inner);
     impl_->delta = h.delta;

@@ -42,7 +42,8 @@ struct CSpaceAccess;   // geometry/src: the exact C-free for other CGAL files of
 
 /// The coverable region of `CSpace::coverableArea` without a C-space of radius r at hand (it is not
 /// needed: only the helper C-spaces of radius r − δ and 2r − 2δ are built).
-/// `threads`: for the raster (0: every core; the value does not depend on it).
+/// `threads` (0: every core): the two helper C-spaces are built at once when more than one, and the
+/// raster splits over them; the value does not depend on it.
 double coverableArea(const Workspace& w, const Rational& radius, const std::vector<Point>& starts, double& errorBound,
                      double relativeEps = 1e-6, unsigned threads = 0);
 
@@ -139,7 +140,7 @@ public:
   /// the components of the C-space of radius 2r − 2δ that lie in K (exact curves) plus the area of
   /// F ∩ (∂K ⊕ disc(r)) (rasterised with a rigorous bound); `errorBound` bounds the raster's error
   /// and the two parts' overlap (a band of width δ + eps' inside the first). Starts in no
-  /// component add nothing. Built on first use.
+  /// component add nothing. Built on first use (the two helpers at once when `threads` allows).
   double coverableArea(const std::vector<Point>& starts, double& errorBound, unsigned threads = 0) const;
 
   /// C-free as polygons of line segments that lie in the exact closed C-free, for line-only files
