@@ -146,28 +146,27 @@ IA lbPointSeg2(const IPointA& p, const IPointA& a, const IPointA& b) {
   return CGAL::square(across(ab, ap)) / l2;  // to the line: ≤ every branch
 }
 
-/// ≤ the squared distance between segments ab and cd; 0 when they may cross. Call under
-/// CGAL::Protect_FPU_rounding<true>.
-IA lbSegSeg2(const IPointA& a, const IPointA& b, const IPointA& c, const IPointA& d) {
-  auto sameSide = [](const IA& u, const IA& v) {
+/// ≤ the (squared, with lbPointSeg2) distance between segments ab and cd from `pointSeg`, a lower
+/// bound of a point's to a segment; 0 when they may cross. On either interval type.
+template <class Pt, class PointSeg>
+auto lbSegSegBy(const Pt& a, const Pt& b, const Pt& c, const Pt& d, PointSeg pointSeg) {
+  using N = decltype(a.x);
+  auto sameSide = [](const N& u, const N& v) {
     return (CGAL::certainly(u > 0) && CGAL::certainly(v > 0)) || (CGAL::certainly(u < 0) && CGAL::certainly(v < 0));
   };
-  const IA o1 = across(asub(b, a), asub(c, a)), o2 = across(asub(b, a), asub(d, a));
-  const IA o3 = across(asub(d, c), asub(a, c)), o4 = across(asub(d, c), asub(b, c));
-  if (!sameSide(o1, o2) && !sameSide(o3, o4)) return IA(0);
-  return CGAL::min(CGAL::min(lbPointSeg2(a, c, d), lbPointSeg2(b, c, d)), CGAL::min(lbPointSeg2(c, a, b), lbPointSeg2(d, a, b)));
+  auto sub = [](const Pt& u, const Pt& v) { return Pt{u.x - v.x, u.y - v.y}; };
+  auto cross = [](const Pt& u, const Pt& v) { return u.x * v.y - u.y * v.x; };
+  const N o1 = cross(sub(b, a), sub(c, a)), o2 = cross(sub(b, a), sub(d, a));
+  const N o3 = cross(sub(d, c), sub(a, c)), o4 = cross(sub(d, c), sub(b, c));
+  if (!sameSide(o1, o2) && !sameSide(o3, o4)) return N(0);
+  return CGAL::min(CGAL::min(pointSeg(a, c, d), pointSeg(b, c, d)), CGAL::min(pointSeg(c, a, b), pointSeg(d, a, b)));
 }
 
+/// ≤ the squared distance between segments ab and cd. Call under CGAL::Protect_FPU_rounding<true>.
+IA lbSegSeg2(const IPointA& a, const IPointA& b, const IPointA& c, const IPointA& d) { return lbSegSegBy(a, b, c, d, lbPointSeg2); }
+
 /// ≤ the distance between segments ab and cd; 0 when they may cross.
-I lbSegSeg(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d) {
-  auto sameSide = [](const I& u, const I& v) {
-    return (CGAL::certainly(u > 0) && CGAL::certainly(v > 0)) || (CGAL::certainly(u < 0) && CGAL::certainly(v < 0));
-  };
-  const I o1 = icross(isub(b, a), isub(c, a)), o2 = icross(isub(b, a), isub(d, a));
-  const I o3 = icross(isub(d, c), isub(a, c)), o4 = icross(isub(d, c), isub(b, c));
-  if (!sameSide(o1, o2) && !sameSide(o3, o4)) return I(0);
-  return imin(imin(lbPointSeg(a, c, d), lbPointSeg(b, c, d)), imin(lbPointSeg(c, a, b), lbPointSeg(d, a, b)));
-}
+I lbSegSeg(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d) { return lbSegSegBy(a, b, c, d, lbPointSeg); }
 
 /// The arc of Checker::arc on intervals: ≤ the distance the exact code finds to edge pq.
 class ArcFilter {
