@@ -84,6 +84,7 @@ int runEvaluateCommand() {
   timer.begin("cells");
   const planners::PlanningContext ctx = planners::makeContext(problem);
   ValidationOptions vo;
+  vo.threads = threads();
   std::optional<CSpace> evalSpace;
   if (o.cspace) {
     timer.begin("C-space");

@@ -29,7 +29,9 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
   if (succeeded(r.plan.status)) {
     phase("validating");
     const auto t1 = std::chrono::steady_clock::now();
-    r.validation = validatePaths(ctx.problem, r.plan.paths);
+    ValidationOptions vo;
+    vo.threads = metricOptions.threads;   // the same share of the cores as the metrics
+    r.validation = validatePaths(ctx.problem, r.plan.paths, vo);
     r.validateSeconds = since(t1);
     phase("metrics");
     const auto t2 = std::chrono::steady_clock::now();

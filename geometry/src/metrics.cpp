@@ -124,7 +124,9 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   if (!clear && pieces <= limit && paths.size() == problem.robots.size()) {
     Problem unanchored = problem;  // clearance and continuity only: the start is not a metric's concern
     for (Robot& rb : unanchored.robots) rb.start.reset();
-    clear = validatePaths(unanchored, paths).valid;
+    ValidationOptions vo;
+    vo.threads = o.threads;
+    clear = validatePaths(unanchored, paths, vo).valid;
   }
   if (pieces <= (clear ? limit : o.exactAreaMaxSegments) &&
       exactCoveredArea(problem.workspace, problem.robots.at(0).radius, paths, area, clear)) {

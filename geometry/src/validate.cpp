@@ -21,9 +21,11 @@
 #include <coverkit/geometry/cspace.h>
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace coverkit {
 
@@ -452,6 +454,60 @@ bool ClearanceChecker::clearArc(const Point& from, const Point& to, const Point&
   return impl_->checker.arc(from, to, center, ccw).empty();
 }
 
+namespace {
+
+/// What validatePaths finds on segments [first, last) of one path, `cur` the point before them.
+struct RangeResult {
+  std::vector<Violation> violations;   ///< at most maxViolations, in order
+  bool valid = true;
+  bool stopped = false;                ///< a non-finite coordinate: nothing after it is checked
+  std::size_t segmentsChecked = 0, exactTests = 0;
+};
+
+RangeResult checkRange(const Problem& problem, const Path& path, int R, std::size_t first, std::size_t last, PointD cur,
+                       const ValidationOptions& o) {
+  RangeResult res;
+  auto add = [&](Violation v) {
+    res.valid = false;
+    if (res.violations.size() < o.maxViolations) res.violations.push_back(std::move(v));
+  };
+  const Robot& robot = problem.robots[static_cast<std::size_t>(R)];
+  Checker check(problem.workspace, robot.radius);
+  if (first > 0) check.skipInsideTest();   // the range holding segment 0 tests the path's first point
+  for (std::size_t si = first; si < last; ++si) {
+    const PathSegment& s = path.segments[si];
+    const int S = static_cast<int>(si);
+    ++res.segmentsChecked;
+    for (double v : {s.from.x, s.from.y, s.to.x, s.to.y, s.center.x, s.center.y})
+      if (!std::isfinite(v)) {
+        add({"finite", R, S, "non-finite coordinate"});
+        res.stopped = true;
+        return res;
+      }
+    const double gap = std::hypot(s.from.x - cur.x, s.from.y - cur.y);
+    if (gap > o.continuityTolerance) {
+      add({"continuity", R, S, "gap of " + formatDouble(gap) + " between " + fmt(cur) + " and " + fmt(s.from)});
+    } else if (gap > 0) {
+      std::string why = check.segment(cur, s.from);
+      if (!why.empty()) add({"clearance", R, S, "joint: " + why});
+    }
+    std::string why = s.kind == PathSegment::Kind::kLine ? check.segment(s.from, s.to)
+                                                         : check.arc(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
+    if (!why.empty()) add({s.kind == PathSegment::Kind::kArc && why.find("circle") != std::string::npos ? "arc" : "clearance", R, S, why});
+    if (o.cspace) {
+      const bool clear = s.kind == PathSegment::Kind::kLine
+                             ? o.cspace->segmentClear(exactPoint(s.from), exactPoint(s.to))
+                             : o.cspace->arcClear(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
+      if (!clear) add({"cspace", R, S, "leaves C-free (r = " + formatDouble(robot.radius.get_d()) + ", eps " + formatDouble(o.cspace->epsilon()) + ")"});
+    }
+    cur = s.to;
+  }
+  res.exactTests = check.exactTests;
+  return res;
+}
+
+}  // namespace
+
 ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& paths, const ValidationOptions& o) {
   ValidationReport rep;
   auto add = [&](Violation v) {
@@ -463,11 +519,11 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
                               std::to_string(problem.robots.size()) + " robots"});
     return rep;
   }
+  const unsigned cores = o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : o.threads;
   for (std::size_t ri = 0; ri < paths.size(); ++ri) {
     const Path& path = paths[ri];
     const Robot& robot = problem.robots[ri];
     const int R = static_cast<int>(ri);
-    Checker check(problem.workspace, robot.radius);
     if (!std::isfinite(path.start.x) || !std::isfinite(path.start.y)) {
       add({"start", R, -1, "start is not finite"});
       continue;
@@ -477,42 +533,53 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
       if (std::hypot(dx, dy) > o.startTolerance)
         add({"start", R, -1, "path starts at " + fmt(path.start) + ", not at the robot's start"});
     }
-    PointD cur = path.start;
     if (path.segments.empty()) {
-      std::string why = check.segment(cur, cur);
+      Checker check(problem.workspace, robot.radius);
+      std::string why = check.segment(path.start, path.start);
       if (!why.empty()) add({"clearance", R, -1, why});
       continue;
     }
-    for (std::size_t si = 0; si < path.segments.size(); ++si) {
-      const PathSegment& s = path.segments[si];
-      const int S = static_cast<int>(si);
-      ++rep.segmentsChecked;
-      for (double v : {s.from.x, s.from.y, s.to.x, s.to.y, s.center.x, s.center.y})
-        if (!std::isfinite(v)) {
-          add({"finite", R, S, "non-finite coordinate"});
-          return rep;
-        }
-      const double gap = std::hypot(s.from.x - cur.x, s.from.y - cur.y);
-      if (gap > o.continuityTolerance) {
-        add({"continuity", R, S, "gap of " + formatDouble(gap) + " between " + fmt(cur) + " and " + fmt(s.from)});
-      } else if (gap > 0) {
-        std::string why = check.segment(cur, s.from);
-        if (!why.empty()) add({"clearance", R, S, "joint: " + why});
+    // Ranges of the path checked at once, each with its own checker. The verdict, the violations
+    // and their order do not depend on how many: each piece's test is the same, and the ranges'
+    // findings are taken in order (the C-space check, whose caches are not shared, stays on one).
+    const std::size_t n = path.segments.size();
+    const std::size_t ranges = o.cspace ? 1 : std::min<std::size_t>(cores, std::max<std::size_t>(1, n / 4096));
+    std::vector<RangeResult> found(ranges);
+    auto bound = [&](std::size_t k) { return n * k / ranges; };
+    auto run = [&](std::size_t k) {
+      const std::size_t first = bound(k);
+      found[k] = checkRange(problem, path, R, first, bound(k + 1), first == 0 ? path.start : path.segments[first - 1].to, o);
+    };
+    if (ranges == 1) run(0);
+    else {
+      std::vector<std::thread> workers;
+      std::vector<std::exception_ptr> failed(ranges);
+      for (std::size_t k = 1; k < ranges; ++k)
+        workers.emplace_back([&, k] {
+          try {
+            run(k);
+          } catch (...) {
+            failed[k] = std::current_exception();
+          }
+        });
+      try {
+        run(0);
+      } catch (...) {
+        failed[0] = std::current_exception();
       }
-      std::string why = s.kind == PathSegment::Kind::kLine
-                            ? check.segment(s.from, s.to)
-                            : check.arc(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
-      if (!why.empty()) add({s.kind == PathSegment::Kind::kArc && why.find("circle") != std::string::npos ? "arc" : "clearance",
-                             R, S, why});
-      if (o.cspace) {
-        const bool clear = s.kind == PathSegment::Kind::kLine
-                               ? o.cspace->segmentClear(exactPoint(s.from), exactPoint(s.to))
-                               : o.cspace->arcClear(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
-        if (!clear) add({"cspace", R, S, "leaves C-free (r = " + formatDouble(robot.radius.get_d()) + ", eps " + formatDouble(o.cspace->epsilon()) + ")"});
-      }
-      cur = s.to;
+      for (std::thread& t : workers) t.join();
+      for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
     }
-    rep.exactTests += check.exactTests;
+    std::size_t exact = 0;
+    for (RangeResult& f : found) {
+      rep.segmentsChecked += f.segmentsChecked;
+      exact += f.exactTests;
+      if (!f.valid) rep.valid = false;
+      for (Violation& v : f.violations) add(std::move(v));
+      if (f.stopped) return rep;   // a non-finite coordinate ends the validation, as it always did
+    }
+    rep.exactTests += exact;
   }
   return rep;
 }

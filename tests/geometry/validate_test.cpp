@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace coverkit;
@@ -190,4 +191,46 @@ TEST(Validator, PiecesAsDoublesAtExactlyRGetTheExactTestsVerdict) {
   }
   EXPECT_GT(clear, 100);
   EXPECT_GT(blocked, 100);
+}
+
+// A long path is checked in ranges on several threads: the report (verdict, every violation in
+// order, the counts) must be the one of a single thread, with faults in several ranges, a gap, and
+// a non-finite coordinate that ends the validation.
+TEST(Validator, ThreadsGiveTheSameReport) {
+  const Problem p = corridor();
+  std::vector<PointD> pts;
+  for (int i = 0; i < 24000; ++i) pts.push_back({1 + 8.0 * (i % 2), 0.5});   // along the corridor and back
+  Path path = Path::fromPoints(pts);
+  for (std::size_t k : {100u, 7000u, 15001u, 23000u}) path.segments[k].to.y = 0.4;   // into the wall
+  for (std::size_t k : {101u, 7001u, 15002u, 23001u}) path.segments[k].from.y = 0.4;
+  path.segments[12000].from.x += 1e-3;                                                   // a gap
+  auto report = [&](const Path& q, unsigned threads) {
+    ValidationOptions o;
+    o.threads = threads;
+    o.maxViolations = 7;
+    return validatePaths(p, {q}, o);
+  };
+  auto same = [](const ValidationReport& a, const ValidationReport& b) {
+    EXPECT_EQ(a.valid, b.valid);
+    EXPECT_EQ(a.segmentsChecked, b.segmentsChecked);
+    EXPECT_EQ(a.exactTests, b.exactTests);
+    ASSERT_EQ(a.violations.size(), b.violations.size());
+    for (std::size_t i = 0; i < a.violations.size(); ++i) {
+      EXPECT_EQ(a.violations[i].kind, b.violations[i].kind);
+      EXPECT_EQ(a.violations[i].segment, b.violations[i].segment);
+      EXPECT_EQ(a.violations[i].detail, b.violations[i].detail);
+    }
+  };
+  const ValidationReport one = report(path, 1);
+  ASSERT_FALSE(one.valid);
+  EXPECT_EQ(one.violations.size(), 7u);   // capped, in path order
+  EXPECT_EQ(one.violations.front().segment, 100);
+  same(one, report(path, 2));
+  same(one, report(path, 3));
+  Path broken = path;
+  broken.segments[18000].to.x = std::numeric_limits<double>::quiet_NaN();
+  const ValidationReport stopped = report(broken, 1);
+  EXPECT_EQ(stopped.segmentsChecked, 18001u);
+  same(stopped, report(broken, 2));
+  same(stopped, report(broken, 4));
 }

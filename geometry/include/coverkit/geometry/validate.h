@@ -37,6 +37,9 @@ struct ValidationOptions {
   /// a failure is a violation of kind "cspace". The distance check above is already exact against
   /// the exact C-obstacles; this one is stricter by up to the C-space's eps.
   const CSpace* cspace = nullptr;
+  /// Threads (0: every core) over ranges of a long path (from 4,096 pieces a range); the report is
+  /// the same for any number.
+  unsigned threads = 1;
 };
 
 /// Validates one path per robot of `problem` (paths.size() must equal robots.size()).
