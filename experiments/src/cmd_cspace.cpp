@@ -22,6 +22,7 @@ struct Options {
   MapArgs map;
   std::string start, out, picture;
   double relEps = 1e-6;
+  unsigned threads = 0;
 };
 Options& options() {
   static Options o;
@@ -39,6 +40,8 @@ CLI::App* addCspaceCommand(CLI::App& app) {
       ->check(CLI::Range(1e-15, 1e-2));
   cspace->add_option("--out", o.out, "C-space file (.json with segments and arcs, or .geojson with arcs sampled)")->required();
   cspace->add_option("--picture", o.picture, "picture (.png, .svg)");
+  cspace->add_option("--threads", o.threads, "threads for the obstacles' offsets; 0, the default: every core. The C-space does not depend on it")
+      ->check(CLI::Range(0u, 1024u));
   return cspace;
 }
 
@@ -51,7 +54,7 @@ int runCspaceCommand() {
   const Problem problem = makeProblem(o.map.map, o.map.radius, o.start, o.map.unknownFree, o.map.cellSize);
   planners::checkProblem(problem);
   progress.step("C-space");
-  const CSpace cs(problem.workspace, problem.robots[0].radius, o.relEps);
+  const CSpace cs(problem.workspace, problem.robots[0].radius, o.relEps, o.threads);
   const datasets::CSpaceDocument doc = cspaceDocument(o.map.map, problem, cs);
   progress.step("writing");
   datasets::OutputBatch outputs;

@@ -88,7 +88,7 @@ int runEvaluateCommand() {
   std::optional<CSpace> evalSpace;
   if (o.cspace) {
     timer.begin("C-space");
-    evalSpace.emplace(ctx.problem.workspace, ctx.problem.robots[0].radius);
+    evalSpace.emplace(ctx.problem.workspace, ctx.problem.robots[0].radius, 1e-6, threads());
     vo.cspace = &*evalSpace;
   }
   timer.begin("validate");

@@ -16,6 +16,7 @@
 #include "cspace_access.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <map>
@@ -144,7 +145,7 @@ struct CSpace::Impl {
   std::map<std::vector<int>, std::pair<double, double>> coverable;  ///< components → (area, error)
 };
 
-CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) : impl_(std::make_unique<Impl>()) {
+CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, unsigned threads) : impl_(std::make_unique<Impl>()) {
   if (radius < 0) throw InputError(w.name, "radius", "robot radius must be >= 0");
   if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
   checkWorkspace(w);  // CGAL's preconditions are not input validation
@@ -154,7 +155,6 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
   const Box b = w.bbox();
   const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
   impl_->eps = relativeEps * std::max(extent, 1e-12);
-  const K::FT r = ft(radius);
   // A frame around everything, so that the outside of each region is a bounded polygon with a hole.
   const Rational pad = 4 * radius + 1;
   const Ring frame = {{Rational(b.xmin - pad), Rational(b.ymin - pad)}, {Rational(b.xmax + pad), Rational(b.ymin - pad)},
@@ -169,15 +169,52 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps) :
       impl_->parts.emplace_back(curved(reg.outer, true), holes.begin(), holes.end());
     }
   }
+  // The offsets, one per obstacle ring, are independent: computed on `threads` threads, each from
+  // its own exact numbers (no lazy number is shared between threads), and joined in ring order, so
+  // C-free is the same, to the bit, for any number of threads.
+  const unsigned cores = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
+  const double eps = impl_->eps;
   for (const Region& reg : w.regions) {
     if (radius == 0) break;
-    // outside of the region: the frame with the region's outer ring as a hole; its offset shrinks
-    // the hole by r, which is the region eroded by r
+    // job 0: outside of the region, the frame with the region's outer ring as a hole; its offset
+    // shrinks the hole by r, which is the region eroded by r. Job k: hole k - 1.
+    const std::size_t jobs = reg.holes.size() + 1;
+    std::vector<std::vector<CPolygonWithHoles>> offsets(jobs);
+    auto offsetJob = [&](std::size_t k) {
+      const K::FT r = ft(radius);
+      if (k == 0) {
+        const LinearPolygon outerHole = linear(reg.outer, false);
+        const LinearPolygonWithHoles outside(linear(frame, true), &outerHole, &outerHole + 1);
+        offsetPieces(outside, reg.outer.size() + 4, r, eps, offsets[0]);
+      } else {
+        const Ring& h = reg.holes[k - 1];
+        offsetPieces(linear(h, true), h.size(), r, eps, offsets[k]);
+      }
+    };
+    const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(cores, jobs));
+    if (workers <= 1) {
+      for (std::size_t k = 0; k < jobs; ++k) offsetJob(k);
+    } else {
+      std::atomic<std::size_t> next{0};
+      std::vector<std::exception_ptr> failed(workers);
+      auto work = [&](unsigned t) {
+        try {
+          for (std::size_t k = next++; k < jobs; k = next++) offsetJob(k);
+        } catch (...) {
+          failed[t] = std::current_exception();
+          next = jobs;
+        }
+      };
+      std::vector<std::thread> pool;
+      for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work, t);
+      work(0);
+      for (std::thread& th : pool) th.join();
+      for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+    }
     std::vector<CPolygonWithHoles> cobs;
-    const LinearPolygon outerHole = linear(reg.outer, false);
-    const LinearPolygonWithHoles outside(linear(frame, true), &outerHole, &outerHole + 1);
-    offsetPieces(outside, reg.outer.size() + 4, r, impl_->eps, cobs);
-    for (const Ring& h : reg.holes) offsetPieces(linear(h, true), h.size(), r, impl_->eps, cobs);
+    for (std::vector<CPolygonWithHoles>& o : offsets)
+      for (CPolygonWithHoles& q : o) cobs.push_back(std::move(q));
     PolygonSet blocked;
     blocked.join(cobs.begin(), cobs.end());  // one range join: divide and conquer inside CGAL
     PolygonSet regionFree(CPolygonWithHoles(curved(reg.outer, true)));
@@ -323,8 +360,8 @@ ClosedHelpers closedHelpers(const Workspace& w, const Rational& r, double relati
     if (failed) std::rethrow_exception(failed);
     return h;
   }
-  h.joined = std::make_unique<CSpace>(w, rJoined, relEps);
-  if (wantInner) h.inner = std::make_unique<CSpace>(w, rInner, relEps);
+  h.joined = std::make_unique<CSpace>(w, rJoined, relEps, cores);
+  if (wantInner) h.inner = std::make_unique<CSpace>(w, rInner, relEps, cores);
   return h;
 }
 

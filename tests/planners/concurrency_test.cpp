@@ -7,6 +7,7 @@
 // (docs/fuzzing.md, "ThreadSanitizer").
 #include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/path_io.h>
+#include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/validate.h>
 #include <coverkit/planners/registry.h>
@@ -217,4 +218,46 @@ TEST(Concurrency, PlannersDecompositionsValidatorAndMetricsGiveTheSerialResultsO
       const std::string difference = firstDifference(serial[i], results[i][t]);
       EXPECT_TRUE(difference.empty()) << all[i].label << ", thread " << t << ": " << difference;
     }
+}
+
+// The phases that split over threads themselves: the C-space's offsets (one per obstacle ring) and
+// the validator's ranges of a long path. Their results must be those of one thread, to the bit;
+// under ThreadSanitizer (.ci/run) this also checks that the threads share no data.
+TEST(Concurrency, CSpaceOffsetsAndValidatorRangesOnThreadsGiveTheOneThreadResults) {
+  datasets::PolygonWorldSpec spec;
+  spec.width = spec.height = 30;
+  spec.count = 40;
+  spec.shape = datasets::ObstacleShape::kMixed;
+  spec.seed = 9;
+  const Workspace w = datasets::generatePolygonWorld(spec);
+  auto describe = [](const CSpace& cs) {
+    std::ostringstream out;
+    out.precision(17);
+    out << cs.componentCount() << " " << cs.area() << "\n";
+    for (const CurveRegion& c : cs.components())
+      for (const PathSegment& s : c.outer.pieces) out << s.from.x << " " << s.from.y << " " << s.to.x << " " << s.to.y << "\n";
+    return out.str();
+  };
+  const std::string one = describe(CSpace(w, Rational(1, 4), 1e-6, 1));
+  EXPECT_EQ(describe(CSpace(w, Rational(1, 4), 1e-6, 3)), one);
+
+  // a path back and forth along a free line, long enough for three ranges of 4,096 pieces
+  Problem p;
+  p.workspace = w;
+  p.robots.push_back({Rational(1, 4), std::nullopt});
+  std::vector<PointD> pts;
+  for (int i = 0; i < 13000; ++i) pts.push_back({0.5 + 29.0 * (i % 2), 0.25 + 0.01 * (i % 2000)});
+  const Path path = Path::fromPoints(pts);
+  auto report = [&](unsigned threads) {
+    ValidationOptions o;
+    o.threads = threads;
+    const ValidationReport r = validatePaths(p, {path}, o);
+    std::ostringstream out;
+    out << r.valid << " " << r.segmentsChecked << " " << r.exactTests << "\n";
+    for (const Violation& v : r.violations) out << v.kind << " " << v.segment << " " << v.detail << "\n";
+    return out.str();
+  };
+  const std::string serial = report(1);
+  EXPECT_NE(serial.find("clearance"), std::string::npos);   // it crosses obstacles: violations in order
+  EXPECT_EQ(report(3), serial);
 }

@@ -99,7 +99,9 @@ public:
   /// Throws InputError when r < 0 or the workspace is not valid (checkWorkspace). r = 0 (a point)
   /// gives C-free = W; the command line rejects it, as a robot has a size. `relativeEps` scales with
   /// the workspace's extent.
-  CSpace(const Workspace& w, const Rational& radius, double relativeEps = 1e-6);
+  /// `threads` (0: every core): the obstacles' offsets are computed on that many threads; C-free is
+  /// the same, to the bit, for any number.
+  CSpace(const Workspace& w, const Rational& radius, double relativeEps = 1e-6, unsigned threads = 1);
   ~CSpace();
   CSpace(CSpace&&) noexcept;
   CSpace& operator=(CSpace&&) noexcept;
