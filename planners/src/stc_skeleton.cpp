@@ -18,6 +18,7 @@
 
 #include "walk_path.h"
 
+#include <array>
 #include <chrono>
 
 namespace coverkit::planners {
@@ -42,8 +43,13 @@ Capabilities StcSkeleton::capabilities() const { return {}; }
 graph::GridGraph StcSkeleton::buildGraph(const PlanningContext& ctx) const {
   const CellGrid& cells = ctx.cells;
   graph::GridGraph g(cells.megaCols(), cells.megaRows());
+  // free when its four sub-cells are (CellGrid::mega), tested here: a call per mega-cell was half
+  // of this phase (8.5 ms at 10^7 sub-cells)
+  auto isFree = [&](int c, int r) { return cells.sub(c, r) == CellState::kFree; };
   for (int r = 0; r < cells.megaRows(); ++r)
-    for (int c = 0; c < cells.megaCols(); ++c) g.active[static_cast<std::size_t>(g.id(c, r))] = cells.mega(c, r) == CellState::kFree;
+    for (int c = 0; c < cells.megaCols(); ++c)
+      g.active[static_cast<std::size_t>(g.id(c, r))] =
+          isFree(2 * c, 2 * r) & isFree(2 * c + 1, 2 * r) & isFree(2 * c, 2 * r + 1) & isFree(2 * c + 1, 2 * r + 1);
   return g;
 }
 
@@ -70,20 +76,51 @@ std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, c
   const int mcols = ctx.cells.megaCols();
   int mc = start.col / 2, mr = start.row / 2;
   int q = quadrantOf(start);
-  const int q0 = q, mc0 = mc, mr0 = mr;
-  std::vector<CellIndex> walk{subCellOf(mc, mr, q)};
-  walk.reserve(4 * tree.nodes + 1);
-  do {
-    const int arm = (q + 3) & 3;
-    if (tree.edges[static_cast<std::size_t>(mr * mcols + mc)] >> arm & 1) {
-      mc += graph::kDx[arm];
-      mr += graph::kDy[arm];
-      q = arm;
-    } else {
-      q = (q + 1) & 3;
+  const int q0 = q;
+  // Mega-cell by mega-cell rather than move by move: entering at quadrant q, the robot passes the
+  // quadrants after q up to the first whose arm has a tree edge, then crosses that arm. A table of
+  // the edge mask and q says how many quadrants that is, so each visit costs one dependent table
+  // look-up instead of a (mispredicted) branch per move; the four quadrants after q are written
+  // and the surplus dropped. At 10^7 sub-cells the walk took 60 ms instead of 90.
+  static const auto quadrantsBefore = [] {
+    std::array<std::array<std::uint8_t, 4>, 16> t{};  // [edge mask][q]: quadrants passed; 4: no edge at all
+    for (int e = 0; e < 16; ++e)
+      for (int from = 0; from < 4; ++from) {
+        int k = 0;
+        while (k < 4 && !(e >> ((from + k + 3) & 3) & 1)) ++k;
+        t[static_cast<std::size_t>(e)][static_cast<std::size_t>(from)] = static_cast<std::uint8_t>(k);
+      }
+    return t;
+  }();
+  // every quadrant of every tree node once and back to the start, plus room for the surplus
+  std::vector<CellIndex> walk(4 * tree.nodes + 5);
+  std::size_t n = 0;
+  walk[n++] = subCellOf(mc, mr, q);
+  const std::uint8_t* edges = tree.edges.data();
+  int v = mr * mcols + mc;
+  const int v0 = v;
+  for (;;) {
+    if (n + 5 > walk.size()) walk.resize(2 * walk.size());  // never with a tree of tree.nodes nodes
+    CellIndex* out = walk.data() + n;
+    const int k = quadrantsBefore[edges[v]][static_cast<std::size_t>(q)];
+    for (int j = 1; j <= 4; ++j) out[j - 1] = subCellOf(mc, mr, (q + j) & 3);
+    if (v == v0) {  // the start's quadrant among those passed: the tour is complete
+      const int toStart = ((q0 - q - 1) & 3) + 1;
+      if (toStart <= k) {
+        n += static_cast<std::size_t>(toStart);
+        break;
+      }
     }
-    walk.push_back(subCellOf(mc, mr, q));
-  } while (!(q == q0 && mc == mc0 && mr == mr0));
+    n += static_cast<std::size_t>(k);
+    const int arm = (q + k + 3) & 3;
+    mc += graph::kDx[arm];
+    mr += graph::kDy[arm];
+    v += graph::kDx[arm] + graph::kDy[arm] * mcols;
+    q = arm;
+    walk[n++] = subCellOf(mc, mr, q);
+    if (v == v0 && q == q0) break;
+  }
+  walk.resize(n);
   return walk;
 }
 
@@ -139,11 +176,29 @@ StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const Par
   for (int c = 0; c < cells.megaCols(); ++c) megaX[static_cast<std::size_t>(c)] = toDouble(cells.megaCenter(c, 0).x);
   for (int r = 0; r < cells.megaRows(); ++r) megaY[static_cast<std::size_t>(r)] = toDouble(cells.megaCenter(0, r).y);
   plan.treeEdges.reserve(tree.nodes);
-  for (int v = 0; v < static_cast<int>(g.size()); ++v) {
+  // node by node with its column and row counted along (no division per node); a parent on a plain
+  // grid is one of the four neighbours, in a layered graph (links) anywhere
+  const bool grid = g.links.empty() && g.layers == 1;
+  for (int v = 0, c = 0, r = 0; v < static_cast<int>(g.size()); ++v) {
     const int p = tree.parent[static_cast<std::size_t>(v)];
-    if (p < 0) continue;
-    plan.treeEdges.push_back({{megaX[static_cast<std::size_t>(g.col(p))], megaY[static_cast<std::size_t>(g.row(p))]},
-                              {megaX[static_cast<std::size_t>(g.col(v))], megaY[static_cast<std::size_t>(g.row(v))]}});
+    if (p >= 0) {
+      int pc = c, pr = r;
+      if (grid) {
+        // vertical first: with a single column, ±1 is a step north or south
+        const int north = p - v == g.cols, south = p - v == -g.cols;
+        pc += (!north && p - v == 1) - (!south && p - v == -1);
+        pr += north - south;
+      } else {
+        pc = g.col(p);
+        pr = g.row(p);
+      }
+      plan.treeEdges.push_back({{megaX[static_cast<std::size_t>(pc)], megaY[static_cast<std::size_t>(pr)]},
+                                {megaX[static_cast<std::size_t>(c)], megaY[static_cast<std::size_t>(r)]}});
+    }
+    if (++c == g.cols) {
+      c = 0;
+      if (++r == g.rows) r = 0;
+    }
   }
   PlacedWalk placed = placeWalk(ctx, walk, start);
   if (!placed.startClear) {
@@ -234,6 +289,9 @@ std::vector<CellIndex> SpiralStcPlanner::circumnavigate(const PlanningContext&, 
   int q = quadrantOf(start);
   const int q0 = q, mc0 = mc, mr0 = mr;
   std::vector<CellIndex> walk{subCellOf(mc, mr, q)};
+  // room for every quadrant of every mega-cell: memory only (the robot's decisions use its sensor
+  // alone), and no copies as the walk grows (tens of MB at 10^7 sub-cells)
+  walk.reserve(4 * world.size() + 1);
   do {
     const int here = mr * cols + mc, arm = (q + 3) & 3;
     bool cross = tree.edges[static_cast<std::size_t>(here)] >> arm & 1;

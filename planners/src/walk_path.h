@@ -18,6 +18,10 @@
 // obstacles exactly 2r apart, at a coordinate that is not a double, stays unsafe: no double path
 // exists there: the moves are reported with the sub-cells to blame, and the planner leaves those
 // sub-cells out (StcSkeleton::plan).
+//
+// A walk that stays in free mega-cells (STC's, Spiral-STC's) needs none of this: every preferred
+// double leans into its own free mega-cell. Its path, the same as the construction above gives, is
+// written directly from the cells (placeInFreeMegaCells in walk_path.cpp).
 #include <coverkit/planners/planner.h>
 
 #include <functional>
