@@ -393,6 +393,7 @@ EOF
   grep -q '"area_method"' "$T/e1.out" && ok || bad "evaluate --metrics basic"
 expect_bad "plan: --metrics unknown" "--metrics" plan --map "$T/room.wkt" --radius 0.25 --planner stc --metrics most --out "$T/out.json"
 expect_bad "plan: --threads not a number" "--threads" plan --map "$T/room.wkt" --radius 0.25 --planner stc --threads many --out "$T/out.json"
+expect_bad "cspace: --threads not a number" "--threads" cspace --map "$T/room.wkt" --radius 0.25 --threads many --out "$T/out.json"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
