@@ -58,20 +58,42 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
     pieces += p.segments.size();
     m.length += p.length();
     long last = -1;
-    auto enter = [&](PointD q) {
-      CellIndex c;
-      if (!cells.locateSubD(q, c)) { last = -1; return; }
+    auto enterCell = [&](const CellIndex& c) {
       const long k = static_cast<long>(c.row) * cells.subCols() + c.col;
       if (k != last) ++visits[static_cast<std::size_t>(k)];
       last = k;
+    };
+    auto enter = [&](PointD q) {
+      CellIndex c;
+      if (!cells.locateSubD(q, c)) { last = -1; return; }
+      enterCell(c);
     };
     // only what lies within D of the workspace can enter a sub-cell: sampling is bounded by that part
     for (const std::vector<PointD>& pts : p.polylineWithin(D / 1000, sampleBox)) {
       last = -1;
       enter(pts.front());
       for (std::size_t i = 1; i < pts.size(); ++i) {
-        const double len = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+        const PointD a = pts[i - 1], b = pts[i];
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
         const long n = std::max(1L, static_cast<long>(std::ceil(len / (D / 32))));
+        auto sample = [&](long k) {
+          const double t = static_cast<double>(k) / static_cast<double>(n);
+          return PointD{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+        };
+        // An axis-parallel piece (most pieces of grid planners): its samples run through one row
+        // (column) of cells, and cell indices are monotone in the coordinate, while samples lie less
+        // than D apart; so they enter every cell from the first sample's to the last one's in turn,
+        // each once. Stepping through those cells gives the same counts without sampling each.
+        CellIndex c1, cn;
+        if ((a.x == b.x || a.y == b.y) && cells.locateSubD(sample(1), c1) && cells.locateSubD(sample(n), cn)) {
+          const bool alongRow = a.y == b.y;
+          const int from = alongRow ? c1.col : c1.row, to = alongRow ? cn.col : cn.row, step = to >= from ? 1 : -1;
+          for (int v = from;; v += step) {
+            enterCell(alongRow ? CellIndex{v, c1.row} : CellIndex{c1.col, v});
+            if (v == to) break;
+          }
+          continue;
+        }
         for (long k = 1; k <= n; ++k) {
           const double t = static_cast<double>(k) / static_cast<double>(n);
           enter({pts[i - 1].x + t * (pts[i].x - pts[i - 1].x), pts[i - 1].y + t * (pts[i].y - pts[i - 1].y)});

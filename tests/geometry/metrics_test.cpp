@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace coverkit;
 
@@ -102,4 +103,59 @@ TEST(Metrics, LengthTurnsAndSubcells) {
   EXPECT_DOUBLE_EQ(m.subcellCoverage, 0.5);
   EXPECT_EQ(m.revisitedSubcells, 1u);  // the start cell, entered again at the end
   EXPECT_EQ(m.areaMethod, "exact");
+}
+
+// The sub-cells a path enters are defined by sampling every D/32 (docs/metrics.md); axis-parallel
+// pieces step through their row or column instead. The counts must be those of the sampling, also
+// where pieces start, end or run on cell boundaries, leave the grid, or have decimal coordinates.
+TEST(Metrics, SubcellsOfAxisParallelPiecesAreThoseOfTheSampling) {
+  const Problem p = room(12, 9, Rational(3, 10));   // D = 0.6: boundaries that are not doubles
+  const CellGrid cells = classifyCells(p.workspace, Rational(3, 5));
+  auto reference = [&](const Path& path) {   // the sampling of the definition
+    std::vector<std::uint32_t> visits(cells.subCount(), 0);
+    long last = -1;
+    auto enter = [&](PointD q) {
+      CellIndex c;
+      if (!cells.locateSubD(q, c)) { last = -1; return; }
+      const long k = static_cast<long>(c.row) * cells.subCols() + c.col;
+      if (k != last) ++visits[static_cast<std::size_t>(k)];
+      last = k;
+    };
+    const double D = cells.subSizeD();
+    for (const std::vector<PointD>& pts : path.polylineWithin(D / 1000, BoxD{-D, -D, 12 + D, 9 + D})) {
+      last = -1;
+      enter(pts.front());
+      for (std::size_t i = 1; i < pts.size(); ++i) {
+        const double len = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+        const long n = std::max(1L, static_cast<long>(std::ceil(len / (D / 32))));
+        for (long k = 1; k <= n; ++k) {
+          const double t = static_cast<double>(k) / static_cast<double>(n);
+          enter({pts[i - 1].x + t * (pts[i].x - pts[i - 1].x), pts[i - 1].y + t * (pts[i].y - pts[i - 1].y)});
+        }
+      }
+    }
+    std::size_t entered = 0, revisited = 0;
+    for (std::uint32_t v : visits) {
+      entered += v > 0;
+      revisited += v > 1;
+    }
+    return std::make_pair(entered, revisited);
+  };
+  std::mt19937 rng(5);
+  const double coords[] = {0.6, 1.2, 0.3, 0.9, 1.8, 0.1, 0.7, 3.0000000000000004, 6, 0, 12, 2.9999999999999996};
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<PointD> pts{{0.3 + 0.6 * (rng() % 19), 0.3 + 0.6 * (rng() % 14)}};
+    for (int k = 0; k < 12; ++k) {
+      PointD q = pts.back();
+      const double c = coords[rng() % 12] + (rng() % 10);
+      (rng() % 2 ? q.x : q.y) = std::min(c, (rng() % 7 == 0) ? 13.0 : 11.9);   // now and then beyond the grid
+      pts.push_back(q);
+    }
+    if (trial % 5 == 0) pts.push_back({pts.back().x + 0.37, pts.back().y + 0.41});   // a slanted piece too
+    const Path path = polyline(pts);
+    const Metrics m = computeMetrics(p, cells, {path});
+    const auto [entered, revisited] = reference(path);
+    ASSERT_EQ(m.enteredSubcells, entered) << "trial " << trial;
+    ASSERT_EQ(m.revisitedSubcells, revisited) << "trial " << trial;
+  }
 }
