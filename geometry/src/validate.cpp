@@ -248,8 +248,6 @@ public:
 
   /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the straight jump
   /// from where the arc meets that ray to t (t lies on the circle only within a relative 1e-9).
-  /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the straight jump
-  /// from where the arc meets that ray to t (t lies on the circle only within a relative 1e-9).
   std::string arc(const Point& f, const Point& t, const Point& c, bool ccw) {
     if (!insideChecked_) {
       insideChecked_ = true;
@@ -303,6 +301,34 @@ public:
       return below(dist(P, F)) || below(dist(P, Tp));
     };
     const bool jump = t2 != rho2;  // else t is where the arc ends
+    // An edge with an end at the arc's centre, as the two edges at the obstacle corner a sweep turns
+    // about: the arc and its jump lie at distance exactly ρ (or |t − c|) from that end, so neither
+    // filter can decide them, and CORE's square roots took half of Smooth-STC's time. Decided here
+    // on rationals: when every direction of the arc (from c) and of the jump makes an angle of at
+    // least 90° with the edge, each of their points is nearest to the edge's end c, at distance
+    // ≥ min(ρ, |t − c|) ≥ r. That holds when both end directions do and the edge's direction is
+    // not inside the arc's angular range (a range leaving the closed half-plane and coming back
+    // passes through it). Otherwise the exact test below decides.
+    const auto clearOfCornerEdge = [&](const detail::IndexedEdge& e) {
+      const Point* other = *e.a == c ? e.b : *e.b == c ? e.a : nullptr;
+      if (!other || full || rho2 < r2_ || t2 < r2_) return false;
+      const Rational ux = other->x - c.x, uy = other->y - c.y;
+      Rational ax = f.x - c.x, ay = f.y - c.y, bx = t.x - c.x, by = t.y - c.y;
+      if (!ccw) {
+        std::swap(ax, bx);
+        std::swap(ay, by);
+      }
+      auto dot = [](const Rational& x0, const Rational& y0, const Rational& x1, const Rational& y1) { return Rational(x0 * x1 + y0 * y1); };
+      auto cross = [](const Rational& x0, const Rational& y0, const Rational& x1, const Rational& y1) { return Rational(x0 * y1 - y0 * x1); };
+      if (dot(ax, ay, ux, uy) > 0 || dot(bx, by, ux, uy) > 0) return false;
+      const Rational ab = cross(ax, ay, bx, by);
+      bool inside;   // the edge's direction within the ccw range from A to B (inRange above)
+      if (ab > 0) inside = cross(ax, ay, ux, uy) >= 0 && cross(ux, uy, bx, by) >= 0;
+      else if (ab < 0) inside = !(cross(bx, by, ux, uy) > 0 && cross(ux, uy, ax, ay) > 0);
+      else if (dot(ax, ay, bx, by) > 0) inside = cross(ax, ay, ux, uy) == 0 && dot(ax, ay, ux, uy) > 0;
+      else inside = cross(ax, ay, ux, uy) >= 0;
+      return !inside;
+    };
     const auto visit = [&](const detail::IndexedEdge& e) {
       if (!bad.empty()) return;
       if (filter) {
@@ -312,6 +338,7 @@ public:
         if (dc > rr + m || far < rr - m) return;
         if (intervals && CGAL::certainly(intervals->lowerBound(*e.a, *e.b) >= RI)) return;
       }
+      if (clearOfCornerEdge(e)) return;
       ++exactTests;
       const ExprPoint P = ep(*e.a), Q = ep(*e.b);
       // intersection of the segment with the circle inside the arc's range

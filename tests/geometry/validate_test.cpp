@@ -234,3 +234,36 @@ TEST(Validator, ThreadsGiveTheSameReport) {
   same(stopped, report(broken, 2));
   same(stopped, report(broken, 4));
 }
+
+// Arcs about an obstacle's corner, as Smooth-STC's sweeps turn: the two edges at the corner are at
+// distance exactly ρ from every point of the arc whose direction makes at least 90° with them, and
+// are decided on rationals without the exact square-root test. Verdicts worked out by hand.
+TEST(Validator, ArcsAboutAnObstacleCornerAreDecidedByTheirDirections) {
+  Workspace w;
+  Region reg;
+  reg.outer = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  reg.holes.push_back({{4, 4}, {4, 6}, {6, 6}, {6, 4}});   // corner c = (6, 6): edges down and left
+  w.regions.push_back(reg);
+  const Rational r(1, 2);
+  auto P = [](const char* x, const char* y) { return Point{Rational(x), Rational(y)}; };
+  const Point c = P("6", "6");
+  struct Case {
+    Point from, to;
+    bool ccw, clear;
+    const char* what;
+  };
+  const Case cases[] = {
+      {P("13/2", "6"), P("6", "13/2"), true, true, "the outer quarter, ρ = r: touches both edges' lines at its ends"},
+      {P("6", "13/2"), P("13/2", "6"), false, true, "the same quarter clockwise"},
+      {P("63/10", "32/5"), P("6", "13/2"), true, true, "inside the quarter, from (3/5, 4/5)·r"},
+      {P("162/25", "293/50"), P("6", "13/2"), true, false, "from 16° below: 0.48 from the right edge"},
+      {P("6", "13/2"), P("13/2", "6"), true, false, "the long way round (270°)"},
+      {P("822/125", "729/125"), P("6", "33/5"), true, true, "ρ = 0.6 from 16° below: 0.576 from the edge (the exact test)"},
+      {P("159/25", "138/25"), P("6", "33/5"), true, false, "ρ = 0.6 from 53° below: 0.36 from the edge"},
+  };
+  ClearanceChecker fast(w, r), exact(w, r, false);
+  for (const Case& k : cases) {
+    EXPECT_EQ(fast.clearArc(k.from, k.to, c, k.ccw), k.clear) << k.what;
+    EXPECT_EQ(exact.clearArc(k.from, k.to, c, k.ccw), k.clear) << k.what;
+  }
+}
