@@ -135,14 +135,14 @@ bool placeInFreeMegaCells(const CellGrid& cells, const std::vector<CellIndex>& w
 
 }  // namespace
 
-PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& rawWalk, const Point& start, bool backToStart) {
+PlacedWalk placeWalk(const PlanningContext& ctx, const std::vector<CellIndex>& rawWalk, const Point& start, bool backToStart, bool direct) {
   const CellGrid& cells = ctx.cells;
   std::vector<Candidates> colC(static_cast<std::size_t>(cells.subCols())), rowC(static_cast<std::size_t>(cells.subRows()));
   for (int c = 0; c < cells.subCols(); ++c)
     colC[static_cast<std::size_t>(c)] = candidates(cells.subCenter(c, 0).x, cells.megaCenter(c / 2, 0).x);
   for (int r = 0; r < cells.subRows(); ++r)
     rowC[static_cast<std::size_t>(r)] = candidates(cells.subCenter(0, r).y, cells.megaCenter(0, r / 2).y);
-  {
+  if (direct) {
     PlacedWalk out;
     if (placeInFreeMegaCells(cells, rawWalk, colC, rowC, {toDouble(start.x), toDouble(start.y)}, backToStart, out.path)) return out;
   }

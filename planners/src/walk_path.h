@@ -44,7 +44,9 @@ struct PlacedWalk {
 /// (repeats allowed), beginning at the start's sub-cell (and, with `backToStart`, ending there: the
 /// path then returns to the start point). A diagonal move stays in its 2×2 block of free cells.
 /// Throws std::logic_error when two consecutive sub-cells are not adjacent.
-PlacedWalk placeWalk(const PlanningContext& context, const std::vector<CellIndex>& walk, const Point& start, bool backToStart = true);
+/// `direct = false` always takes the general construction (the tests compare the two).
+PlacedWalk placeWalk(const PlanningContext& context, const std::vector<CellIndex>& walk, const Point& start, bool backToStart = true,
+                     bool direct = true);
 
 /// The common start of a planner on the sub-cell grid: throws InputError when a sub-cell cannot hold
 /// the disc (D < 2r). Adds the plan's path and returns true with the start point and its sub-cell;
