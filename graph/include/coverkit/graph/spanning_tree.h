@@ -13,9 +13,10 @@
 //    ties broken by edge index so the tree is unique.
 // Each of BFS, Kruskal and a fixed-order DFS exists twice: with Boost.Graph on a
 // compressed_sparse_row_graph and with plain arrays. The tests check both give the same tree; the
-// benchmark (experiments/bench/bench_graph.cpp) measured Boost.Graph 12x (BFS) and 11x (Kruskal)
-// slower on 10^6 nodes, 5x even without building the CSR graph, so buildTree uses the plain ones
-// (docs/performance.md has the figures).
+// benchmark (experiments/bench/bench_graph.cpp) measured Boost.Graph 8x (DFS) and 10x (BFS)
+// slower on 10^6 nodes, over 2x even without building the CSR graph, and its Kruskal 70x slower
+// than the plain one, which takes the edges in their known weight order instead of sorting them;
+// so buildTree uses the plain ones (docs/performance.md has the figures).
 #include <coverkit/graph/grid_graph.h>
 
 #include <string>
