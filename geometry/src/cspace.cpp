@@ -14,14 +14,12 @@
 
 #include "circle_segment_area.h"
 #include "cspace_access.h"
+#include "parallel.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <map>
 #include <stdexcept>
-#include <thread>
 
 namespace coverkit {
 
@@ -172,7 +170,6 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, u
   // The offsets, one per obstacle ring, are independent: computed on `threads` threads, each from
   // its own exact numbers (no lazy number is shared between threads), and joined in ring order, so
   // C-free is the same, to the bit, for any number of threads.
-  const unsigned cores = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
   const double eps = impl_->eps;
   for (const Region& reg : w.regions) {
     if (radius == 0) break;
@@ -191,27 +188,7 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, u
         offsetPieces(linear(h, true), h.size(), r, eps, offsets[k]);
       }
     };
-    const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(cores, jobs));
-    if (workers <= 1) {
-      for (std::size_t k = 0; k < jobs; ++k) offsetJob(k);
-    } else {
-      std::atomic<std::size_t> next{0};
-      std::vector<std::exception_ptr> failed(workers);
-      auto work = [&](unsigned t) {
-        try {
-          for (std::size_t k = next++; k < jobs; k = next++) offsetJob(k);
-        } catch (...) {
-          failed[t] = std::current_exception();
-          next = jobs;
-        }
-      };
-      std::vector<std::thread> pool;
-      for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work, t);
-      work(0);
-      for (std::thread& th : pool) th.join();
-      for (const std::exception_ptr& e : failed)
-        if (e) std::rethrow_exception(e);
-    }
+    detail::parallelFor(jobs, threads, offsetJob);
     std::vector<CPolygonWithHoles> cobs;
     for (std::vector<CPolygonWithHoles>& o : offsets)
       for (CPolygonWithHoles& q : o) cobs.push_back(std::move(q));
@@ -338,30 +315,13 @@ ClosedHelpers closedHelpers(const Workspace& w, const Rational& r, double relati
     delta = 4 * exactFromDouble(h.epsPrime);  // > the helpers' eps (relEps·extent rounds within an ulp of eps')
     h.delta = delta.get_d();
   }
-  const Rational rJoined = r - delta, rInner = 2 * r - 2 * delta;
-  const unsigned cores = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
-  if (wantInner && cores > 1) {
-    // each C-space is built from the shared, read-only workspace into its own objects
-    std::exception_ptr failed;
-    std::thread second([&] {
-      try {
-        h.inner = std::make_unique<CSpace>(w, rInner, relEps);
-      } catch (...) {
-        failed = std::current_exception();
-      }
-    });
-    try {
-      h.joined = std::make_unique<CSpace>(w, rJoined, relEps);
-    } catch (...) {
-      second.join();
-      throw;
-    }
-    second.join();
-    if (failed) std::rethrow_exception(failed);
-    return h;
-  }
-  h.joined = std::make_unique<CSpace>(w, rJoined, relEps, cores);
-  if (wantInner) h.inner = std::make_unique<CSpace>(w, rInner, relEps, cores);
+  // each C-space is built from the shared, read-only workspace into its own objects: the two at once
+  // when there are threads for both, each on one, else each on all there are
+  const unsigned cores = detail::threadCount(threads), each = wantInner && cores > 1 ? 1 : cores;
+  detail::parallelFor(wantInner ? 2 : 1, cores, [&](std::size_t k) {
+    if (k == 0) h.joined = std::make_unique<CSpace>(w, Rational(r - delta), relEps, each);
+    else h.inner = std::make_unique<CSpace>(w, Rational(2 * r - 2 * delta), relEps, each);
+  });
   return h;
 }
 

@@ -5,13 +5,13 @@
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <limits>
 #include <optional>
-#include <thread>
 #include <cmath>
 #include <unordered_map>
 
@@ -94,10 +94,7 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
           }
           continue;
         }
-        for (long k = 1; k <= n; ++k) {
-          const double t = static_cast<double>(k) / static_cast<double>(n);
-          enter({pts[i - 1].x + t * (pts[i].x - pts[i - 1].x), pts[i - 1].y + t * (pts[i].y - pts[i - 1].y)});
-        }
+        for (long k = 1; k <= n; ++k) enter(sample(k));
       }
     }
     // turns at joints and turning along arcs
@@ -327,9 +324,9 @@ double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::
     std::vector<Square> next;
     std::size_t covered = 0, uncertain = 0;
   };
-  const unsigned threadCount = std::max(1u, threads == 0 ? std::thread::hardware_concurrency() : threads);
+  const unsigned threadCount = detail::threadCount(threads);
   std::vector<Run> runs;
-  std::vector<detail::EdgeIndex> indices(threadCount - 1, edges);   // the threads' own; edges is the caller's
+  std::vector<detail::EdgeIndex> indices(threadCount - 1, edges);   // parts 1..: their own (a query marks edges in it); part 0: the caller's
   for (int lev = 0;; ++lev) {
     const double e = side * std::sqrt(0.5), area = side * side;
     next.clear();
@@ -359,13 +356,9 @@ double rasterCoveredArea(const Workspace& w, const Rational& radius, const std::
     // threads only for levels worth it (a thread costs tens of microseconds)
     const std::size_t n = level.size(), parts = std::min<std::size_t>(threadCount, std::max<std::size_t>(1, n / 2048));
     runs.assign(parts, Run{});
-    {
-      std::vector<std::thread> pool;
-      for (std::size_t t = 1; t < parts; ++t)
-        pool.emplace_back(classify, n * t / parts, n * (t + 1) / parts, std::ref(runs[t]), std::ref(indices[t - 1]));
-      classify(0, n / parts, runs[0], edges);
-      for (std::thread& th : pool) th.join();
-    }
+    detail::parallelFor(parts, threadCount, [&](std::size_t t) {   // part t alone uses its index
+      classify(n * t / parts, n * (t + 1) / parts, runs[t], t == 0 ? edges : indices[t - 1]);
+    });
     for (Run& run : runs) {
       for (std::size_t k = 0; k < run.covered; ++k) covered += area;
       for (std::size_t k = 0; k < run.uncertain; ++k) errorBound += area;

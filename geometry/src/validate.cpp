@@ -10,6 +10,7 @@
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
+#include "parallel.h"
 
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/Interval_nt.h>
@@ -21,11 +22,9 @@
 #include <coverkit/geometry/cspace.h>
 
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 namespace coverkit {
 
@@ -546,7 +545,7 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
                               std::to_string(problem.robots.size()) + " robots"});
     return rep;
   }
-  const unsigned cores = o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : o.threads;
+  const unsigned cores = detail::threadCount(o.threads);
   for (std::size_t ri = 0; ri < paths.size(); ++ri) {
     const Path& path = paths[ri];
     const Robot& robot = problem.robots[ri];
@@ -577,27 +576,7 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
       const std::size_t first = bound(k);
       found[k] = checkRange(problem, path, R, first, bound(k + 1), first == 0 ? path.start : path.segments[first - 1].to, o);
     };
-    if (ranges == 1) run(0);
-    else {
-      std::vector<std::thread> workers;
-      std::vector<std::exception_ptr> failed(ranges);
-      for (std::size_t k = 1; k < ranges; ++k)
-        workers.emplace_back([&, k] {
-          try {
-            run(k);
-          } catch (...) {
-            failed[k] = std::current_exception();
-          }
-        });
-      try {
-        run(0);
-      } catch (...) {
-        failed[0] = std::current_exception();
-      }
-      for (std::thread& t : workers) t.join();
-      for (const std::exception_ptr& e : failed)
-        if (e) std::rethrow_exception(e);
-    }
+    detail::parallelFor(ranges, cores, run);
     std::size_t exact = 0;
     for (RangeResult& f : found) {
       rep.segmentsChecked += f.segmentsChecked;
