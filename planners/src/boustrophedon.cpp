@@ -428,6 +428,117 @@ public:
   };
   Extent extent(int k) const { return {regions_.xmin(k), regions_.xmax(k)}; }
 
+  /// Rounds the joints of segs[from, end) where the heading turns by 1° to 175° and at least one
+  /// of the two pieces is a line: an arc of radius r, r/2, ... or r/64 tangent to both (filletOf),
+  /// the arc and both shortened pieces checked exactly; a joint where none is clear keeps its
+  /// corner. A piece gives at most half its length to each end, a lane (isLane) at most
+  /// r(1 − sin α)/cos α, α the angle of the other piece's tangent to the x axis: every point within
+  /// r of the part of a lane cut off is then within r of the side pass through the lane's end
+  /// (boustrophedon.h), so rounding loses no coverage.
+  void roundJoints(std::vector<PathSegment>& segs, std::size_t from, const std::vector<bool>& isLane) const {
+    if (segs.size() < from + 2) return;
+    std::vector<PathSegment> out(segs.begin(), segs.begin() + static_cast<std::ptrdiff_t>(from));
+    auto lane = [&](std::size_t i) { return i < isLane.size() && isLane[i]; };
+    auto laneBound = [&](double h) {
+      const double sa = std::abs(std::sin(h)), ca = std::abs(std::cos(h));
+      return ca > 1e-9 ? r_ * (1 - sa) / ca : 0.0;
+    };
+    PathSegment cur = segs[from];
+    for (std::size_t i = from; i + 1 < segs.size(); ++i) {
+      PathSegment next = segs[i + 1];
+      const double theta = wrapAngle(heading(next, false) - heading(cur, true));
+      const bool lines = cur.kind == PathSegment::Kind::kLine || next.kind == PathSegment::Kind::kLine;
+      if (lines && std::abs(theta) > M_PI / 180 && std::abs(theta) < 175 * M_PI / 180 && cur.length() > 0 && next.length() > 0) {
+        // what each piece may give: from cur's end, from next's start
+        const double room1 = std::min(cur.length(), lane(i) ? laneBound(heading(next, false)) : segs[i].length() / 2);
+        const double room2 = lane(i + 1) ? laneBound(heading(cur, true)) : next.length() / 2;
+        bool done = false;
+        for (double rho = r_; !done && rho >= r_ / 64; rho /= 2) {
+          PathSegment a2, f, b2;
+          if (!filletOf(cur, next, rho, a2, f, b2)) continue;
+          if (cur.length() - a2.length() > room1 || next.length() - b2.length() > room2) continue;
+          checks_ += 3;
+          if (!clear(f) || !clear(a2) || !clear(b2)) continue;
+          out.push_back(a2);
+          out.push_back(f);
+          next = b2;
+          done = true;
+        }
+        if (done) {
+          cur = next;
+          continue;
+        }
+      }
+      out.push_back(cur);
+      cur = next;
+    }
+    out.push_back(cur);
+    segs.swap(out);
+  }
+
+  /// A piece clear in the frame's C-free (radius r + μ), exactly.
+  bool clear(const PathSegment& g) const {
+    if (g.kind == PathSegment::Kind::kLine) return space_.segmentClear(exactOf(g.from), exactOf(g.to));
+    return space_.arcClear(exactOf(g.from), exactOf(g.to), exactOf(g.center), g.ccw);
+  }
+
+  static PathSegment reversed(const PathSegment& g) {
+    return g.kind == PathSegment::Kind::kLine ? PathSegment::line(g.to, g.from) : PathSegment::arc(g.to, g.from, g.center, !g.ccw);
+  }
+
+  /// The arc of radius rho tangent to a at t1 and to b at t2, on the inner side of the turn where a
+  /// ends and b begins (a line and a line, a line and an arc, or an arc and a line): a2 is a up to
+  /// t1, f the arc, b2 b from t2. False when that circle touches a or b outside them.
+  static bool filletOf(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
+    if (a.kind != PathSegment::Kind::kLine) {
+      // an arc then a line: the line then the arc, travelled backwards
+      if (b.kind != PathSegment::Kind::kLine || !filletOf(reversed(b), reversed(a), rho, b2, f, a2)) return false;
+      b2 = reversed(b2);
+      f = reversed(f);
+      a2 = reversed(a2);
+      return true;
+    }
+    const PointD p = a.to;
+    const double len = dist(a.from, a.to);
+    const PointD d{(a.to.x - a.from.x) / len, (a.to.y - a.from.y) / len};
+    const double theta = wrapAngle(heading(b, false) - heading(a, true));
+    const bool left = theta > 0;
+    const PointD n = left ? PointD{-d.y, d.x} : PointD{d.y, -d.x};
+    PointD c, t2;
+    double s;
+    if (b.kind == PathSegment::Kind::kLine) {
+      s = -rho * std::tan(std::abs(theta) / 2);
+      c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
+      const double lb = dist(b.from, b.to);
+      t2 = {p.x + (b.to.x - b.from.x) / lb * -s, p.y + (b.to.y - b.from.y) / lb * -s};
+    } else {
+      // the centre on the line parallel to a at rho, at R − rho from b's centre (b turns the same
+      // way) or R + rho (the other way)
+      const PointD o = b.center;
+      const double R = dist(b.from, o);
+      const bool same = b.ccw == left;
+      const double rf = same ? R - rho : R + rho;
+      if (rf <= 0) return false;
+      const PointD w{p.x + n.x * rho - o.x, p.y + n.y * rho - o.y};
+      const double bq = w.x * d.x + w.y * d.y, disc = bq * bq - (w.x * w.x + w.y * w.y - rf * rf);
+      if (disc < 0) return false;
+      s = -bq + std::sqrt(disc);   // the root nearer the joint from behind, when it is behind
+      if (s > 0) s = -bq - std::sqrt(disc);
+      if (s > 0) return false;
+      c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
+      t2 = {o.x + (c.x - o.x) * R / rf, o.y + (c.y - o.y) * R / rf};
+    }
+    if (-s >= len) return false;
+    const PointD t1{p.x + d.x * s, p.y + d.y * s};
+    a2 = PathSegment::line(a.from, t1);
+    f = PathSegment::arc(t1, t2, c, left);
+    b2 = b.kind == PathSegment::Kind::kLine ? PathSegment::line(t2, b.to) : PathSegment::arc(t2, b.to, b.center, b.ccw);
+    // tangent at both ends, and t2 on b (not beyond its end): otherwise the wrong circle
+    if (std::abs(wrapAngle(heading(f, false) - heading(a2, true))) > 1e-6 || std::abs(wrapAngle(heading(b2, false) - heading(f, true))) > 1e-6)
+      return false;
+    return b2.length() < b.length() && f.length() < rho * M_PI;
+  }
+
   /// A transition made of line segments, pulled straight: from each point, the farthest later
   /// point of the route that a clear segment reaches (checked exactly), and on from there. Fewer
   /// turns and a shorter way; the route's own segments, already clear, are the fallback.
@@ -461,32 +572,82 @@ private:
     return walls >= 0.999 * (hi - lo);
   }
 
+  /// The point τ inside piece p at x (offsetAt), or where the circle has no point at that x (near
+  /// its x-extreme), along the normal at the boundary point (offsetOf).
+  static PointD onOffset(const SidePiece& p, double x, bool top, double t) {
+    PointD q;
+    if (offsetAt(p, x, top, t, q)) return q;
+    return offsetOf(p, {x, p.yAt(x)}, top, t);
+  }
+
+  /// The unit direction of a line piece, travelled with x increasing (dir = 1) or decreasing.
+  static PointD directionOf(const SidePiece& p, double dir) {
+    const double len = std::hypot(p.a, p.b);
+    PointD d{p.b / len, -p.a / len};
+    if (d.x * dir < 0) d = {-d.x, -d.y};
+    return d;
+  }
+
+  /// Along the side from u to v, τ inside it: one leg per boundary piece, on the piece's parallel
+  /// line or concentric circle, the legs joined where two pieces meet. Two line legs are joined at
+  /// the crossing of their parallel lines (one corner, as the boundary has); other legs at the
+  /// points τ along the normals at the joint (the same point where the pieces meet tangentially),
+  /// by a short line where they differ. Lane ends are points of these curves (laneEnd), so the
+  /// walk never steps back along a side.
   bool hugAlong(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out) const {
     double lo, hi;
     const double dir = v.x >= u.x ? 1 : -1;
     std::vector<SidePiece> pieces = regions_.side(cell, top, std::min(u.x, v.x), std::max(u.x, v.x));
     if (dir < 0) std::reverse(pieces.begin(), pieces.end());
-    PointD cur = u;
+    struct Leg {
+      SidePiece p;
+      double xs, xe, t;
+      PointD in, out;
+    };
+    std::vector<Leg> legs;
     for (const SidePiece& p : pieces) {
       const double xs = dir > 0 ? std::max(p.x0, u.x) : std::min(p.x1, u.x);
       const double xe = dir > 0 ? std::min(p.x1, v.x) : std::max(p.x0, v.x);
       if ((xe - xs) * dir <= 0) continue;
       if (!regions_.interval(cell, (xs + xe) / 2, lo, hi)) return false;
       const double t = tau(lo, hi);
-      const PointD start = offsetOf(p, {xs, p.yAt(xs)}, top, t);
-      const bool last = xe == v.x;
-      const PointD target = last ? v : offsetOf(p, {xe, p.yAt(xe)}, top, t);
-      if (dist(cur, start) > 1e-12 * (1 + std::abs(cur.x) + std::abs(cur.y)) && !line(cur, start, out)) return false;
-      cur = start;
-      if (!p.arc) {
-        if (!line(cur, target, out)) return false;
-        cur = target;
+      legs.push_back({p, xs, xe, t, onOffset(p, xs, top, t), onOffset(p, xe, top, t)});
+    }
+    for (std::size_t k = 1; k < legs.size(); ++k) {
+      Leg &a = legs[k - 1], &b = legs[k];
+      a.out = offsetOf(a.p, {b.xs, a.p.yAt(b.xs)}, top, a.t);
+      b.in = offsetOf(b.p, {b.xs, b.p.yAt(b.xs)}, top, b.t);
+      if (a.p.arc || b.p.arc || a.p.b == 0 || b.p.b == 0) continue;
+      const PointD da = directionOf(a.p, dir), db = directionOf(b.p, dir);
+      const double cross = da.x * db.y - da.y * db.x;
+      if (std::abs(cross) < 1e-9) continue;
+      const PointD w{b.in.x - a.in.x, b.in.y - a.in.y};
+      const double s = (w.x * db.y - w.y * db.x) / cross;
+      const PointD at{a.in.x + s * da.x, a.in.y + s * da.y};
+      // ahead of a's entry and before b's exit
+      if (s > 0 && (b.out.x - at.x) * dir > 0) a.out = b.in = at;
+    }
+    const double tiny = 1e-12 * (1 + std::abs(u.x) + std::abs(u.y));
+    PointD cur = u;
+    for (const Leg& g : legs) {
+      if (dist(cur, g.in) > tiny && !line(cur, g.in, out)) return false;
+      if (dist(cur, g.in) > tiny) cur = g.in;
+      if (dist(cur, g.out) <= tiny) continue;
+      if (!g.p.arc) {
+        if (!line(cur, g.out, out)) return false;
+        cur = g.out;
       } else {
         PointD end;
-        if (!arc(cur, target, p.center, out, end)) return false;
+        if (!arc(cur, g.out, g.p.center, out, end)) return false;
         cur = end;
       }
     }
+    if (dist(cur, v) > tiny || out.empty() || out.back().kind != PathSegment::Kind::kLine) return line(cur, v, out);
+    // v within rounding of the last leg's end: that leg ends at v instead (checked again)
+    const PathSegment last = out.back();
+    out.pop_back();
+    if (line(last.from, v, out)) return true;
+    out.push_back(last);
     return line(cur, v, out);
   }
 
@@ -510,7 +671,7 @@ private:
 };
 
 FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std::string& decomposition, double degrees, bool chain,
-                        const TerminationCondition& stop) {
+                        bool rounded, const TerminationCondition& stop) {
   FramePlan fp;
   const double r = problem.robots[0].radius.get_d();
   const Point start = *problem.robots[0].start;
@@ -669,6 +830,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       continue;
     }
     walk.shortcut(route);
+    if (rounded) walk.roundJoints(route, 0, {});
     segs.insert(segs.end(), route.begin(), route.end());
     phaseTurns["turns_transitions"] += turnsIn(segs, mark0, segs.size());
     std::size_t mark = segs.size();
@@ -680,12 +842,18 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     phaseTurns["turns_first_side"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
     bool atBottom = bottomFirst;
+    std::vector<bool> isLane(segs.size(), false);
     for (std::size_t j = m; ok && j-- > 0;) {
+      const std::size_t at = segs.size();
       ok = walk.line(cur(), end(j, !atBottom), segs);
+      isLane.resize(segs.size(), false);
+      if (segs.size() > at) isLane[at] = true;
       atBottom = !atBottom;
       ++lanesTotal;
       if (ok && j > 0) ok = walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
     }
+    // the serpentine's corners rounded: the side passes sweep what they cut (roundJoints)
+    if (ok && rounded) walk.roundJoints(segs, mark, isLane);
     phaseTurns["turns_lanes"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
     if (m != 2)   // two lanes: the serpentine's turn has followed the other side already
@@ -795,6 +963,9 @@ std::vector<ParamSpec> BoustrophedonPlanner::params() const {
           {"chains", ParamType::kBool, "true", "true|false",
            "sweep chains of cells joined through vertical walls as one region (one entry, lanes across the walls); false: "
            "every cell on its own, as in the paper"},
+          {"round", ParamType::kBool, "true", "true|false",
+           "round the serpentine's corners and the transitions' corners with arcs of radius up to r (each checked exactly; "
+           "the side passes keep theirs, so nothing is lost of the coverage); false: corners, as in the paper"},
           {"direction", ParamType::kDouble, "0", "-360:360|best",
            "sweep direction in degrees (lanes perpendicular to it), or best: the workspace's main edge directions, 0 and 90 "
            "tried, the least length + r x turning kept"}};
@@ -829,7 +1000,7 @@ Plan BoustrophedonPlanner::plan(const PlanningContext& ctx, const ParamSet& para
   FramePlan best;
   double cspace = 0, decompose = 0, sweep = 0;
   for (double deg : directions) {
-    FramePlan fp = planDirection(problem, rPlan, params.text("decomposition"), deg, params.flag("chains"), stop);
+    FramePlan fp = planDirection(problem, rPlan, params.text("decomposition"), deg, params.flag("chains"), params.flag("round"), stop);
     cspace += fp.cspaceSeconds;
     decompose += fp.decomposeSeconds;
     sweep += fp.planSeconds;
