@@ -1,5 +1,6 @@
 // Boustrophedon coverage on an exact cell decomposition (see boustrophedon.h for the decisions).
 #include <coverkit/geometry/error.h>
+#include <coverkit/geometry/fillet.h>
 #include <coverkit/geometry/validate.h>
 #include <coverkit/graph/cell_graph.h>
 #include <coverkit/planners/boustrophedon.h>
@@ -21,13 +22,6 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 double dist(PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); }
 Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
-/// The heading of a piece at its start or end (radians).
-double heading(const PathSegment& s, bool atEnd) {
-  if (s.kind == PathSegment::Kind::kLine) return std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
-  const PointD p = atEnd ? s.to : s.from;
-  const double a = std::atan2(p.y - s.center.y, p.x - s.center.x);
-  return a + (s.ccw ? M_PI / 2 : -M_PI / 2);
-}
 double wrapAngle(double a) { return std::remainder(a, 2 * M_PI); }
 
 /// Total turning of a path (radians): heading changes at joints and along arcs.
@@ -35,8 +29,8 @@ double turning(const Path& path) {
   double t = 0;
   for (std::size_t i = 0; i < path.segments.size(); ++i) {
     const PathSegment& s = path.segments[i];
-    if (s.kind == PathSegment::Kind::kArc) t += std::abs(wrapAngle(heading(s, true) - heading(s, false)));
-    if (i > 0) t += std::abs(wrapAngle(heading(s, false) - heading(path.segments[i - 1], true)));
+    if (s.kind == PathSegment::Kind::kArc) t += std::abs(wrapAngle(headingOf(s, true) - headingOf(s, false)));
+    if (i > 0) t += std::abs(wrapAngle(headingOf(s, false) - headingOf(path.segments[i - 1], true)));
   }
   return t;
 }
@@ -49,7 +43,7 @@ double turnsIn(const std::vector<PathSegment>& segs, std::size_t from, std::size
   for (std::size_t i = from > 0 ? from - 1 : 0; i < to; ++i) {
     const PathSegment& s = segs[i];
     if (s.kind == PathSegment::Kind::kLine && s.from.x == s.to.x && s.from.y == s.to.y) continue;
-    if (prev && std::abs(wrapAngle(heading(s, false) - heading(*prev, true))) > M_PI / 180) ++n;
+    if (prev && std::abs(wrapAngle(headingOf(s, false) - headingOf(*prev, true))) > M_PI / 180) ++n;
     prev = &s;
   }
   return n;
@@ -429,7 +423,7 @@ public:
   Extent extent(int k) const { return {regions_.xmin(k), regions_.xmax(k)}; }
 
   /// Rounds the joints of segs[from, end) where the heading turns by 1° to 175° and at least one
-  /// of the two pieces is a line: an arc of radius r, r/2, ... or r/64 tangent to both (filletOf),
+  /// of the two pieces is a line: an arc of radius r, r/2, ... or r/64 tangent to both (filletCorner),
   /// the arc and both shortened pieces checked exactly; a joint where none is clear keeps its
   /// corner. A piece gives at most half its length to each end, a lane (isLane) at most
   /// r(1 − sin α)/cos α, α the angle of the other piece's tangent to the x axis: every point within
@@ -446,16 +440,16 @@ public:
     PathSegment cur = segs[from];
     for (std::size_t i = from; i + 1 < segs.size(); ++i) {
       PathSegment next = segs[i + 1];
-      const double theta = wrapAngle(heading(next, false) - heading(cur, true));
+      const double theta = wrapAngle(headingOf(next, false) - headingOf(cur, true));
       const bool lines = cur.kind == PathSegment::Kind::kLine || next.kind == PathSegment::Kind::kLine;
       if (lines && std::abs(theta) > M_PI / 180 && std::abs(theta) < 175 * M_PI / 180 && cur.length() > 0 && next.length() > 0) {
         // what each piece may give: from cur's end, from next's start
-        const double room1 = std::min(cur.length(), lane(i) ? laneBound(heading(next, false)) : segs[i].length() / 2);
-        const double room2 = lane(i + 1) ? laneBound(heading(cur, true)) : next.length() / 2;
+        const double room1 = std::min(cur.length(), lane(i) ? laneBound(headingOf(next, false)) : segs[i].length() / 2);
+        const double room2 = lane(i + 1) ? laneBound(headingOf(cur, true)) : next.length() / 2;
         bool done = false;
         for (double rho = r_; !done && rho >= r_ / 64; rho /= 2) {
           PathSegment a2, f, b2;
-          if (!filletOf(cur, next, rho, a2, f, b2)) continue;
+          if (!filletCorner(cur, next, rho, a2, f, b2)) continue;
           if (cur.length() - a2.length() > room1 || next.length() - b2.length() > room2) continue;
           checks_ += 3;
           if (!clear(f) || !clear(a2) || !clear(b2)) continue;
@@ -480,63 +474,6 @@ public:
   bool clear(const PathSegment& g) const {
     if (g.kind == PathSegment::Kind::kLine) return space_.segmentClear(exactOf(g.from), exactOf(g.to));
     return space_.arcClear(exactOf(g.from), exactOf(g.to), exactOf(g.center), g.ccw);
-  }
-
-  static PathSegment reversed(const PathSegment& g) {
-    return g.kind == PathSegment::Kind::kLine ? PathSegment::line(g.to, g.from) : PathSegment::arc(g.to, g.from, g.center, !g.ccw);
-  }
-
-  /// The arc of radius rho tangent to a at t1 and to b at t2, on the inner side of the turn where a
-  /// ends and b begins (a line and a line, a line and an arc, or an arc and a line): a2 is a up to
-  /// t1, f the arc, b2 b from t2. False when that circle touches a or b outside them.
-  static bool filletOf(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
-    if (a.kind != PathSegment::Kind::kLine) {
-      // an arc then a line: the line then the arc, travelled backwards
-      if (b.kind != PathSegment::Kind::kLine || !filletOf(reversed(b), reversed(a), rho, b2, f, a2)) return false;
-      b2 = reversed(b2);
-      f = reversed(f);
-      a2 = reversed(a2);
-      return true;
-    }
-    const PointD p = a.to;
-    const double len = dist(a.from, a.to);
-    const PointD d{(a.to.x - a.from.x) / len, (a.to.y - a.from.y) / len};
-    const double theta = wrapAngle(heading(b, false) - heading(a, true));
-    const bool left = theta > 0;
-    const PointD n = left ? PointD{-d.y, d.x} : PointD{d.y, -d.x};
-    PointD c, t2;
-    double s;
-    if (b.kind == PathSegment::Kind::kLine) {
-      s = -rho * std::tan(std::abs(theta) / 2);
-      c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
-      const double lb = dist(b.from, b.to);
-      t2 = {p.x + (b.to.x - b.from.x) / lb * -s, p.y + (b.to.y - b.from.y) / lb * -s};
-    } else {
-      // the centre on the line parallel to a at rho, at R − rho from b's centre (b turns the same
-      // way) or R + rho (the other way)
-      const PointD o = b.center;
-      const double R = dist(b.from, o);
-      const bool same = b.ccw == left;
-      const double rf = same ? R - rho : R + rho;
-      if (rf <= 0) return false;
-      const PointD w{p.x + n.x * rho - o.x, p.y + n.y * rho - o.y};
-      const double bq = w.x * d.x + w.y * d.y, disc = bq * bq - (w.x * w.x + w.y * w.y - rf * rf);
-      if (disc < 0) return false;
-      s = -bq + std::sqrt(disc);   // the root nearer the joint from behind, when it is behind
-      if (s > 0) s = -bq - std::sqrt(disc);
-      if (s > 0) return false;
-      c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
-      t2 = {o.x + (c.x - o.x) * R / rf, o.y + (c.y - o.y) * R / rf};
-    }
-    if (-s >= len) return false;
-    const PointD t1{p.x + d.x * s, p.y + d.y * s};
-    a2 = PathSegment::line(a.from, t1);
-    f = PathSegment::arc(t1, t2, c, left);
-    b2 = b.kind == PathSegment::Kind::kLine ? PathSegment::line(t2, b.to) : PathSegment::arc(t2, b.to, b.center, b.ccw);
-    // tangent at both ends, and t2 on b (not beyond its end): otherwise the wrong circle
-    if (std::abs(wrapAngle(heading(f, false) - heading(a2, true))) > 1e-6 || std::abs(wrapAngle(heading(b2, false) - heading(f, true))) > 1e-6)
-      return false;
-    return b2.length() < b.length() && f.length() < rho * M_PI;
   }
 
   /// A transition made of line segments, pulled straight: from each point, the farthest later

@@ -1,0 +1,81 @@
+// Fillets between two pieces of a path (see fillet.h).
+#include <coverkit/geometry/fillet.h>
+
+#include <cmath>
+
+namespace coverkit {
+
+namespace {
+double dist(PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double wrapAngle(double a) { return std::remainder(a, 2 * M_PI); }
+}  // namespace
+
+double headingOf(const PathSegment& s, bool atEnd) {
+  if (s.kind == PathSegment::Kind::kLine) return std::atan2(s.to.y - s.from.y, s.to.x - s.from.x);
+  const PointD p = atEnd ? s.to : s.from;
+  const double a = std::atan2(p.y - s.center.y, p.x - s.center.x);
+  return a + (s.ccw ? M_PI / 2 : -M_PI / 2);
+}
+
+double turnAt(const PathSegment& a, const PathSegment& b) { return wrapAngle(headingOf(b, false) - headingOf(a, true)); }
+
+PathSegment reversedPiece(const PathSegment& s) {
+  return s.kind == PathSegment::Kind::kLine ? PathSegment::line(s.to, s.from) : PathSegment::arc(s.to, s.from, s.center, !s.ccw);
+}
+
+bool filletCorner(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
+  if (!(rho > 0)) return false;
+  if (a.kind != PathSegment::Kind::kLine) {
+    // an arc then a line: the line then the arc, travelled backwards
+    PathSegment ra, rf, rb;
+    if (b.kind != PathSegment::Kind::kLine || !filletCorner(reversedPiece(b), reversedPiece(a), rho, rb, rf, ra)) return false;
+    b2 = reversedPiece(rb);
+    f = reversedPiece(rf);
+    a2 = reversedPiece(ra);
+    return true;
+  }
+  const PointD p = a.to;
+  const double len = dist(a.from, a.to);
+  if (!(len > 0) || !(b.length() > 0)) return false;
+  const PointD d{(a.to.x - a.from.x) / len, (a.to.y - a.from.y) / len};
+  const double theta = turnAt(a, b);
+  if (theta == 0) return false;
+  const bool left = theta > 0;
+  const PointD n = left ? PointD{-d.y, d.x} : PointD{d.y, -d.x};
+  PointD c, t2;
+  double s;
+  if (b.kind == PathSegment::Kind::kLine) {
+    s = -rho * std::tan(std::abs(theta) / 2);
+    c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
+    const double lb = dist(b.from, b.to);
+    t2 = {p.x + (b.to.x - b.from.x) / lb * -s, p.y + (b.to.y - b.from.y) / lb * -s};
+  } else {
+    // the centre on the line parallel to a at rho, at R − rho from b's centre when b turns the
+    // same way as the corner, R + rho when it turns the other way
+    const PointD o = b.center;
+    const double R = dist(b.from, o);
+    const double rf = b.ccw == left ? R - rho : R + rho;
+    if (rf <= 0) return false;
+    const PointD w{p.x + n.x * rho - o.x, p.y + n.y * rho - o.y};
+    const double bq = w.x * d.x + w.y * d.y, disc = bq * bq - (w.x * w.x + w.y * w.y - rf * rf);
+    if (disc < 0) return false;
+    s = -bq + std::sqrt(disc);   // the root nearer the joint from behind, when it is behind
+    if (s > 0) s = -bq - std::sqrt(disc);
+    if (s > 0) return false;
+    c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
+    t2 = {o.x + (c.x - o.x) * R / rf, o.y + (c.y - o.y) * R / rf};
+  }
+  if (-s >= len) return false;
+  const PointD t1{p.x + d.x * s, p.y + d.y * s};
+  const PathSegment na = PathSegment::line(a.from, t1), nf = PathSegment::arc(t1, t2, c, left);
+  const PathSegment nb = b.kind == PathSegment::Kind::kLine ? PathSegment::line(t2, b.to) : PathSegment::arc(t2, b.to, b.center, b.ccw);
+  // tangent at both ends, t2 inside b, less than a half turn: otherwise it is the wrong circle
+  if (std::abs(turnAt(na, nf)) > 1e-6 || std::abs(turnAt(nf, nb)) > 1e-6) return false;
+  if (!(nb.length() < b.length()) || !(nf.length() < rho * M_PI)) return false;
+  a2 = na;
+  f = nf;
+  b2 = nb;
+  return true;
+}
+
+}  // namespace coverkit
