@@ -75,6 +75,9 @@ std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
           {"turns", static_cast<double>(m.turns)},
           {"turning_angle_deg", m.turningAngleDeg},
           {"time_s", m.time},
+          {"reversals", static_cast<double>(m.reversals)},
+          {"max_curvature", m.maxCurvature},
+          {"robot_time_s", m.robotTime},
           {"segments", static_cast<double>(m.segments)}})
     f.push_back(std::move(kv));
   if (m.hasCoverable) {

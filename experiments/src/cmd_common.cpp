@@ -32,9 +32,18 @@ void addSpeedOptions(CLI::App* c, SpeedArgs& s, const std::string& defaultMetric
                                         "(and the coverable region, which needs two more C-spaces): docs/metrics.md; default " +
                                             defaultMetrics + ". The exact validator runs at every level")
       ->check(CLI::IsMember({"basic", "area", "full"}));
+  c->add_option("--v-max", s.vMax, "robot_time_s: the differential-drive robot's top speed (m/s, default 0.5)")->check(CLI::PositiveNumber);
+  c->add_option("--a-max", s.aMax, "robot_time_s: its acceleration and braking (m/s^2, default 0.5)")->check(CLI::PositiveNumber);
+  c->add_option("--omega-max", s.omegaMax, "robot_time_s: its top turning rate (rad/s, default 1.5)")->check(CLI::PositiveNumber);
 }
 
-MetricOptions metricOptionsFor(const SpeedArgs& s) { return metricOptionsForLevel(s.metrics); }
+MetricOptions metricOptionsFor(const SpeedArgs& s) {
+  MetricOptions o = metricOptionsForLevel(s.metrics);
+  o.vMax = s.vMax;
+  o.aMax = s.aMax;
+  o.omegaMax = s.omegaMax;
+  return o;
+}
 
 std::map<std::string, std::string> parseParams(const std::vector<std::string>& kv) {
   std::map<std::string, std::string> out;

@@ -26,6 +26,7 @@ struct SpeedArgs {
   bool timings = false;
   unsigned threads = 0;
   std::string metrics;   ///< basic or full
+  double vMax = 0.5, aMax = 0.5, omegaMax = 1.5;   ///< the robot of robot_time_s (MetricOptions)
 };
 /// `defaultMetrics`: what --metrics is when not given (plan: basic, evaluate: full).
 void addSpeedOptions(CLI::App* c, SpeedArgs& s, const std::string& defaultMetrics);

@@ -1,6 +1,7 @@
 // `coverkit list`. See cmd_list.h.
 #include "cmd_list.h"
 
+#include <coverkit/optimise/processor.h>
 #include <coverkit/planners/registry.h>
 
 #include <iostream>
@@ -9,16 +10,16 @@ namespace coverkit::experiments {
 
 namespace {
 
-void printParams(const std::vector<planners::ParamSpec>& params) {
+void printParams(const std::vector<planners::ParamSpec>& params, const char* prefix = "  --param ") {
   for (const auto& s : params)
-    std::cout << "  --param " << s.name << "=<" << planners::toString(s.type) << "> default " << s.defaultValue << ", range " << s.range
+    std::cout << prefix << s.name << "=<" << planners::toString(s.type) << "> default " << s.defaultValue << ", range " << s.range
               << "\n      " << s.help << "\n";
 }
 
 }  // namespace
 
 CLI::App* addListCommand(CLI::App& app) {
-  return app.add_subcommand("list", "list planners and decompositions, and their parameters");
+  return app.add_subcommand("list", "list planners, decompositions and path processors, and their parameters");
 }
 
 int runListCommand() {
@@ -35,6 +36,11 @@ int runListCommand() {
     std::cout << "decomposition " << n << ": " << d->description() << "\n  capabilities: " << (caps.monotone ? "monotone cells" : "cells not monotone")
               << (caps.rotatable ? ", any sweep direction" : "") << "\n";
     printParams(d->params());
+  }
+  for (const std::string& n : optimise::ProcessorRegistry::instance().names()) {
+    auto p = optimise::ProcessorRegistry::instance().create(n);
+    std::cout << "path processor " << n << " (--post " << n << ":KEY=VALUE;...): " << p->description() << "\n";
+    printParams(p->params(), "  ");
   }
   return 0;
 }

@@ -26,7 +26,7 @@ struct Options {
   MapArgs map;
   SpeedArgs speed;
   std::string start, out, picture, planner = "stc", timeLimit;
-  std::vector<std::string> params;
+  std::vector<std::string> params, post;
 };
 Options& options() {
   static Options o;
@@ -54,6 +54,8 @@ CLI::App* addPlanCommand(CLI::App& app) {
   plan->add_option("--planner", o.planner, "planner name (see 'coverkit list')")->required();
   plan->add_option("--start", o.start, "start X,Y (default: centre of the first free sub-cell of the largest free component)");
   plan->add_option("--param", o.params, "planner parameter KEY=VALUE (repeatable)");
+  plan->add_option("--post", o.post, "path processor NAME[:KEY=VALUE;...] run on the plan before it is validated (repeatable, in order; "
+                                     "see 'coverkit list')");
   plan->add_option("--time-limit", o.timeLimit, "seconds, finite and >= 0 (0: none)");
   plan->add_option("--out", o.out, "output path file (.json, .csv, .geojson)")->required();
   plan->add_option("--picture", o.picture, "picture (.png, .svg)");
@@ -69,8 +71,11 @@ int runPlanCommand() {
   datasets::checkOutputFile(o.out, "--out", {".json", ".csv", ".geojson"});
   if (!o.picture.empty()) checkPictureOutput(o.picture);
   planners::Registry::instance().create(o.planner);  // unknown planner: before any work
+  std::vector<optimise::PostStep> post;
+  for (const std::string& p : o.post) post.push_back(optimise::parsePostStep(p));
+  optimise::checkPostSteps(post);
   setThreads(o.speed.threads);
-  Progress progress(6);
+  Progress progress(post.empty() ? 6 : 7);
   PhaseTimer timer;
   progress.step("reading the map");
   timer.begin("read");
@@ -78,11 +83,12 @@ int runPlanCommand() {
   progress.step("classifying cells");
   timer.begin("cells");
   const planners::PlanningContext ctx = planners::makeContext(std::move(problem));
-  const std::map<std::string, std::string> phaseName{{"planning", "plan"}, {"validating", "validate"}, {"metrics", "metrics"}};
+  const std::map<std::string, std::string> phaseName{
+      {"planning", "plan"}, {"post-processing", "post"}, {"validating", "validate"}, {"metrics", "metrics"}};
   const RunResult r = runOnce(ctx, o.planner, kv, timeLimit, [&](const std::string& what) {
     progress.step(what);
     timer.begin(phaseName.at(what));
-  }, metricOptionsFor(o.speed));
+  }, metricOptionsFor(o.speed), post);
   progress.step("writing");
   timer.begin("write");
   datasets::OutputBatch outputs;  // everything made in memory first, then written all or nothing
@@ -95,7 +101,8 @@ int runPlanCommand() {
   outputs.commit();
   timer.end();
   for (const auto& [k, v] : r.plan.timings)
-    if (k != "cells") timer.part("plan", k, v);
+    if (k != "cells" && k.rfind("post ", 0) != 0) timer.part("plan", k, v);
+    else if (k != "cells") timer.part("post", k.substr(5), v);
   for (const auto& [k, v] : r.metrics.seconds) timer.part("metrics", k, v);
   if (o.speed.timings) std::cerr << timer.report();
   std::cout << o.planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "

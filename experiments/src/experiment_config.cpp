@@ -50,8 +50,23 @@ int configInt(const YAML::Node& node, const std::string& file, const std::string
   return v;
 }
 
-PlannerSpec parsePlannerSpec(const std::string& text, const std::string& configFile) {
+PlannerSpec parsePlannerSpec(const std::string& label, const std::string& configFile) {
   PlannerSpec p;
+  const auto plus = label.find('+');
+  const std::string text = label.substr(0, plus);
+  if (plus != std::string::npos) {
+    std::stringstream steps(label.substr(plus + 1));
+    std::string step;
+    while (std::getline(steps, step, '+')) {
+      try {
+        p.post.push_back(optimise::parsePostStep(step));
+        optimise::checkPostSteps({p.post.back()});
+      } catch (const InputError& e) {
+        throw InputError(configFile, "planners", "'" + label + "': " + e.what());
+      }
+    }
+    if (p.post.empty()) throw InputError(configFile, "planners", "'" + label + "': no path processor after '+'");
+  }
   const auto colon = text.find(':');
   p.name = text.substr(0, colon);
   if (!planners::Registry::instance().contains(p.name)) throw InputError(configFile, "planners", "unknown planner '" + p.name + "'");
@@ -68,7 +83,7 @@ PlannerSpec parsePlannerSpec(const std::string& text, const std::string& configF
 
 RunResult runSpec(const planners::PlanningContext& ctx, const std::string& label, const std::string& configFile, const MetricOptions& mo) {
   const PlannerSpec spec = parsePlannerSpec(label, configFile);
-  return runOnce(ctx, spec.name, spec.params, 0, {}, mo);
+  return runOnce(ctx, spec.name, spec.params, 0, {}, mo, spec.post);
 }
 
 YAML::Node loadConfigRoot(const std::string& configFile, const std::vector<std::string>& keys) {

@@ -79,10 +79,13 @@ void checkKeys(const YAML::Node& node, const std::string& file, const std::strin
 int configInt(const YAML::Node& node, const std::string& file, const std::string& key, int fallback, int lo, int hi, const std::string& place = "");
 
 /// A planner as a config names it: `name` or `name:key=value;key=value` (parameters), e.g.
-/// `smooth_stc:corners=keep`. The whole text is its label in the CSV and the chart.
+/// `smooth_stc:corners=keep`, then any path processors after '+', each `name` or
+/// `name:key=value;...`, e.g. `stc+fillet:max_radius=0.25` (values with a '+' cannot be written
+/// here). The whole text is its label in the CSV and the chart.
 struct PlannerSpec {
   std::string name;
   std::map<std::string, std::string> params;
+  std::vector<optimise::PostStep> post;
 };
 PlannerSpec parsePlannerSpec(const std::string& text, const std::string& configFile);
 

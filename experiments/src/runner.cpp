@@ -15,7 +15,8 @@
 namespace coverkit::experiments {
 
 RunResult runOnce(const planners::PlanningContext& ctx, const std::string& planner, const std::map<std::string, std::string>& params,
-                  double timeLimit, const std::function<void(const std::string&)>& onPhase, const MetricOptions& metricOptions) {
+                  double timeLimit, const std::function<void(const std::string&)>& onPhase, const MetricOptions& metricOptions,
+                  const std::vector<optimise::PostStep>& post) {
   auto phase = [&](const char* name) {
     if (onPhase) onPhase(name);
   };
@@ -26,6 +27,12 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
   auto since = [](std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   r.planSeconds = since(t0);
   r.totalSeconds = r.planSeconds + ctx.cellSeconds;
+  if (succeeded(r.plan.status) && !post.empty()) {
+    phase("post-processing");
+    const auto tp = std::chrono::steady_clock::now();
+    r.plan = optimise::postProcess(ctx.problem, std::move(r.plan), post);
+    r.postSeconds = since(tp);
+  }
   if (succeeded(r.plan.status)) {
     phase("validating");
     const auto t1 = std::chrono::steady_clock::now();

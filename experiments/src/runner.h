@@ -3,6 +3,7 @@
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/validate.h>
+#include <coverkit/optimise/processor.h>
 #include <coverkit/planners/decomposition.h>
 #include <coverkit/planners/planner.h>
 
@@ -17,7 +18,7 @@ struct RunResult {
   ValidationReport validation;
   Metrics metrics;
   double totalSeconds = 0;    ///< the cells' classification and the planner
-  double planSeconds = 0, validateSeconds = 0, metricsSeconds = 0;   ///< wall seconds of each phase
+  double planSeconds = 0, postSeconds = 0, validateSeconds = 0, metricsSeconds = 0;   ///< wall seconds of each phase
 };
 
 /// The metric options of the command line: everything, including the coverable region, on
@@ -56,10 +57,12 @@ private:
   double wall0_ = 0, cpu0_ = 0;
 };
 
-/// `onPhase`, when set, is called as each phase starts ("planning", "validating", "metrics").
+/// `onPhase`, when set, is called as each phase starts ("planning", "post-processing", "validating",
+/// "metrics"). `post`: path processors run on the plan before it is validated (optimise::postProcess).
 RunResult runOnce(const planners::PlanningContext& context, const std::string& planner,
                   const std::map<std::string, std::string>& params, double timeLimit = 0,
-                  const std::function<void(const std::string&)>& onPhase = {}, const MetricOptions& metricOptions = defaultMetricOptions());
+                  const std::function<void(const std::string&)>& onPhase = {}, const MetricOptions& metricOptions = defaultMetricOptions(),
+                  const std::vector<optimise::PostStep>& post = {});
 
 /// A run that could not start: the problem was refused (`why`, e.g. a start in an obstacle) before
 /// any planner ran. Status invalid_start, no path, not valid (one violation of kind "start").

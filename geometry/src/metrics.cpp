@@ -35,7 +35,55 @@ std::pair<double, double> tangents(const PathSegment& s) {
   return {heading(s.center, s.from) + turn, heading(s.center, s.to) + turn};
 }
 
+/// Time-optimal drive over one run of pieces (no stop inside), from rest to rest: per piece its
+/// length and speed limit. Node speeds from a forward and a backward pass under the acceleration,
+/// then per piece: accelerate, cruise at its limit (or peak below it), brake.
+double runTime(const std::vector<std::pair<double, double>>& run, double a) {
+  const std::size_t n = run.size();
+  if (n == 0) return 0;
+  std::vector<double> node(n + 1, 0);
+  for (std::size_t k = 1; k < n; ++k) node[k] = std::min(run[k - 1].second, run[k].second);
+  for (std::size_t k = 1; k <= n; ++k) node[k] = std::min(node[k], std::sqrt(node[k - 1] * node[k - 1] + 2 * a * run[k - 1].first));
+  for (std::size_t k = n; k-- > 0;) node[k] = std::min(node[k], std::sqrt(node[k + 1] * node[k + 1] + 2 * a * run[k].first));
+  double t = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double L = run[k].first, V = run[k].second, u = node[k], w = node[k + 1];
+    if (L <= 0) continue;
+    const double peak = std::min(V, std::sqrt((u * u + w * w + 2 * a * L) / 2));
+    const double d1 = (peak * peak - u * u) / (2 * a), d2 = (peak * peak - w * w) / (2 * a);
+    const double cruise = std::max(0.0, L - d1 - d2);
+    t += (peak - u) / a + (peak - w) / a + (peak > 0 ? cruise / peak : 0);
+  }
+  return t;
+}
+
 }  // namespace
+
+double robotTraversalTime(const Path& path, const MetricOptions& o) {
+  if (o.vMax <= 0 || o.aMax <= 0 || o.omegaMax <= 0) return 0;
+  const double tol = o.turnToleranceDeg * M_PI / 180;
+  std::vector<std::pair<double, double>> run;   // (length, speed limit)
+  double t = 0, prev = 0;
+  bool have = false;
+  for (const PathSegment& s : path.segments) {
+    const double len = s.length();
+    if (!(len > 0)) continue;
+    const auto [h0, h1] = tangents(s);
+    if (have) {
+      const double d = std::abs(wrap(h0 - prev));
+      if (d > tol) {   // a corner: stop, turn on the spot
+        t += runTime(run, o.aMax) + d / o.omegaMax;
+        run.clear();
+      }
+    }
+    double limit = o.vMax;
+    if (s.kind == PathSegment::Kind::kArc) limit = std::min(limit, o.omegaMax * std::hypot(s.from.x - s.center.x, s.from.y - s.center.y));
+    run.emplace_back(len, limit);
+    prev = h1;
+    have = true;
+  }
+  return t + runTime(run, o.aMax);
+}
 
 Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,
                        const MetricOptions& o) {
@@ -108,10 +156,12 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
         const double d = std::abs(wrap(h0 - prev));
         m.turningAngleDeg += d * 180 / M_PI;
         if (d > tol) ++m.turns;
+        if (d > o.reversalDeg * M_PI / 180) ++m.reversals;
       }
       if (s.kind == PathSegment::Kind::kArc) {
         const double rad = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
         if (rad > 0) m.turningAngleDeg += s.length() / rad * 180 / M_PI;
+        if (rad > 0 && s.length() > 0) m.maxCurvature = std::max(m.maxCurvature, 1 / rad);
       }
       prev = h1;
       have = true;
@@ -130,6 +180,7 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   m.subcellCoverage = m.freeSubcells ? static_cast<double>(m.coveredSubcells) / m.freeSubcells : 0;
   m.overlapRatio = m.enteredSubcells ? static_cast<double>(m.revisitedSubcells) / m.enteredSubcells : 0;
   m.time = o.speed > 0 ? m.length / o.speed : 0;
+  for (const Path& p : paths) m.robotTime = std::max(m.robotTime, robotTraversalTime(p, o));
 
   lap("sub-cells, length, turns");
   if (!o.area) return m;

@@ -360,8 +360,31 @@ expect_bad "experiment decompositions: --size" "--size: 10: not a setting of the
 expect_bad "plan boustrophedon: direction not a number" "--param: direction=west: must be a number in [-360:360] or best" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param direction=west --out "$T/out.json"
 expect_bad "plan boustrophedon: unknown decomposition" "--param: decomposition=grid: must be one of boustrophedon|trapezoidal" plan --map "$T/room.wkt" --radius 0.25 --planner boustrophedon --param decomposition=grid --out "$T/out.json"
 
-# --------------------------------------------------------------------------------------------- timings and threads
+# --------------------------------------------------------------------------------------------- path post-processing
 has_phases() { local f="$1"; shift; for phase in "$@"; do grep -q "^ *$phase" "$f" || return 1; done; }
+# --post runs before the validator; the path file gets the processor's statistics and the robot-time
+# metrics; a bad step is refused before any work, exit 2, no file
+"$CK" plan --map "$DATA/pillars.wkt" --radius 0.25 --planner stc --post fillet --post "fillet:max_radius=0.5;keep_coverage=false" --out "$T/post.json" --timings > "$T/post.out" 2> "$T/post.err" &&
+  python3 - "$T/post.json" <<'PYEOF' && has_phases "$T/post.err" plan post fillet validate && ok || bad "plan --post fillet: $(cat "$T/post.out" "$T/post.err")"
+import json, sys
+d = json.load(open(sys.argv[1]))
+s, m = d["statistics"], d["metrics"]
+assert s["post_fillet_rounded"] > 0 and s["post_fillet_reverted"] == 0, s
+assert m["turns"] < s["post_fillet_corners"] and m["reversals"] == 0 and m["max_curvature"] > 0 and m["robot_time_s"] > 0, m
+assert any(g["type"] == "arc" for g in d["robots"][0]["segments"])
+PYEOF
+expect_bad "plan --post: unknown processor" "--post: smoothen: unknown path processor (known: fillet" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post smoothen --out "$T/out.json"
+expect_bad "plan --post: parameter out of range" "max_radius=-1" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius=-1" --out "$T/out.json"
+expect_bad "plan --post: parameter without a value" "--post: fillet:max_radius: expected KEY=VALUE" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius" --out "$T/out.json"
+expect_bad "plan --v-max not positive" "--v-max" plan --map "$T/room.wkt" --radius 0.25 --planner stc --v-max 0 --out "$T/out.json"
+printf 'planners: ["stc+fillet:max_radius=0.5", "stc+nope"]\n' > "$T/cvs-bad7.yaml"
+expect_bad "config path processor" "cvs-bad7.yaml: planners: 'stc+nope': --post: nope: unknown path processor" experiment coverage-vs-size --config "$T/cvs-bad7.yaml" --out "$T/out.json"
+printf 'planners: ["stc", "stc+fillet"]\nradii: [0.5]\nworlds: {count: 1, width: 8, height: 8, obstacles: 2}\n' > "$T/cvs-post.yaml"
+"$CK" experiment coverage-vs-size --config "$T/cvs-post.yaml" --out "$T/cvs-post" > /dev/null &&
+  [ "$(csv_count "$T/cvs-post/results.csv" "r['planner'] == 'stc+fillet' and r['valid'] == '1' and float(r['turns']) < 4")" -eq 1 ] &&
+  ok || bad "planner with a path processor in a config: $(cat "$T/cvs-post/results.csv" 2>/dev/null)"
+
+# --------------------------------------------------------------------------------------------- timings and threads
 "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/t0.json" --metrics full > /dev/null 2> "$T/t0.err" &&
   "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/t1.json" --metrics full --timings --threads 1 > /dev/null 2> "$T/t1.err" &&
   "$CK" plan --map "$DATA/rooms.grid" --radius 0.125 --planner stc --out "$T/t3.json" --metrics full --timings --threads 3 > /dev/null 2> "$T/t3.err" &&

@@ -1,12 +1,35 @@
 #include "helpers/checkers.h"
 
-#include <coverkit/geometry/error.h>
+#include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/path_io.h>
+#include <coverkit/geometry/error.h>
 
 #include <cmath>
 #include <sstream>
 
 namespace coverkit::testing_helpers {
+
+std::vector<std::pair<std::string, Workspace>> contractWorlds() {
+  std::vector<std::pair<std::string, Workspace>> worlds;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    datasets::GridMapSpec g;
+    g.width = 24 + static_cast<int>(seed) * 3;
+    g.height = 20;
+    g.density = 0.04 * static_cast<double>(seed % 4);
+    g.clustered = seed % 2 == 0;
+    g.resolution = Rational(1, 10);
+    g.seed = seed;
+    worlds.emplace_back("grid" + std::to_string(seed), datasets::gridToWorkspace(datasets::generateGridMap(g), "grid"));
+    datasets::PolygonWorldSpec p;
+    p.seed = seed;
+    p.count = 8;
+    p.shape = static_cast<datasets::ObstacleShape>(seed % 4);
+    worlds.emplace_back("poly" + std::to_string(seed), datasets::generatePolygonWorld(p));
+  }
+  return worlds;
+}
+
+Rational contractRadius(const std::string& label) { return label.rfind("grid", 0) == 0 ? Rational(1, 10) : Rational(1, 4); }
 
 ::testing::AssertionResult planIsValid(const planners::PlanningContext& ctx, const Plan& plan) {
   if (!succeeded(plan.status)) return ::testing::AssertionFailure() << "1. plan status " << toString(plan.status) << ": " << plan.message;

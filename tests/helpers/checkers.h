@@ -11,6 +11,12 @@
 
 namespace coverkit::testing_helpers {
 
+/// The contract test's seeded worlds: six grid maps (resolution 1/10, 0-12 % blocked, scattered
+/// and clustered) and six polygon worlds (8 obstacles of four shapes), with their labels.
+std::vector<std::pair<std::string, Workspace>> contractWorlds();
+/// The radius the contract test gives a robot on a contract world: 1/10 on grids, 1/4 on polygons.
+Rational contractRadius(const std::string& label);
+
 /// The message of the InputError that f throws (empty when it throws none).
 std::string inputErrorMessage(const std::function<void()>& f);
 

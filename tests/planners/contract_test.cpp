@@ -15,26 +15,6 @@ using namespace coverkit;
 
 namespace {
 
-std::vector<std::pair<std::string, Workspace>> seededWorlds() {
-  std::vector<std::pair<std::string, Workspace>> worlds;
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    datasets::GridMapSpec g;
-    g.width = 24 + static_cast<int>(seed) * 3;
-    g.height = 20;
-    g.density = 0.04 * static_cast<double>(seed % 4);
-    g.clustered = seed % 2 == 0;
-    g.resolution = Rational(1, 10);
-    g.seed = seed;
-    worlds.emplace_back("grid" + std::to_string(seed), datasets::gridToWorkspace(datasets::generateGridMap(g), "grid"));
-    datasets::PolygonWorldSpec p;
-    p.seed = seed;
-    p.count = 8;
-    p.shape = static_cast<datasets::ObstacleShape>(seed % 4);
-    worlds.emplace_back("poly" + std::to_string(seed), datasets::generatePolygonWorld(p));
-  }
-  return worlds;
-}
-
 std::vector<std::map<std::string, std::string>> parameterVariants(const planners::Planner& p) {
   std::vector<std::map<std::string, std::string>> out{{}};
   for (const auto& spec : p.params()) {
@@ -53,8 +33,8 @@ class PlannerContract : public ::testing::TestWithParam<std::string> {};
 TEST_P(PlannerContract, ValidCompleteDeterministicOnSeededWorlds) {
   const std::string name = GetParam();
   auto planner = planners::Registry::instance().create(name);
-  for (const auto& [label, world] : seededWorlds()) {
-    const Rational r = label.rfind("grid", 0) == 0 ? Rational(1, 10) : Rational(1, 4);
+  for (const auto& [label, world] : testing_helpers::contractWorlds()) {
+    const Rational r = testing_helpers::contractRadius(label);
     const auto ctx = testing_helpers::contextFor(world, r);
     for (const auto& params : parameterVariants(*planner)) {
       SCOPED_TRACE(label + " " + (params.empty() ? "defaults" : params.begin()->second));

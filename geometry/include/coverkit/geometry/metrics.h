@@ -14,6 +14,10 @@ class CSpace;
 struct MetricOptions {
   double speed = 0.2;                  ///< m/s, for time_s
   double turnToleranceDeg = 1.0;       ///< heading changes above this count as turns
+  double reversalDeg = 150;            ///< heading changes above this count as reversals
+  /// The differential-drive robot of robot_time_s (docs/metrics.md): top speed (m/s), acceleration
+  /// and deceleration (m/s²), top turning rate (rad/s).
+  double vMax = 0.5, aMax = 0.5, omegaMax = 1.5;
   std::size_t exactAreaMaxSegments = 3000;        ///< above this, area coverage is rasterised...
   std::size_t exactAreaMaxSegmentsClear = 20000;  ///< ...unless the path is clear (no clip to F needed)
   std::size_t rasterMaxPixels = 4'000'000;
@@ -60,6 +64,9 @@ struct Metrics {
   std::size_t turns = 0;
   double turningAngleDeg = 0;
   double time = 0;                     ///< length / speed (s)
+  std::size_t reversals = 0;           ///< heading changes above reversalDeg at joints
+  double maxCurvature = 0;             ///< largest 1/ρ over the arcs (1/m); corners are turns, not curvature
+  double robotTime = 0;                ///< the slowest robot's traversal time, differential drive (s)
   std::size_t segments = 0;
   /// Wall seconds per part ("sub-cells, length, turns", "covered area", "coverable region"): for
   /// `--timings`, never written to a file.
@@ -68,6 +75,13 @@ struct Metrics {
 
 Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,
                        const MetricOptions& options = {});
+
+/// The time a differential-drive robot takes to drive `path` (docs/metrics.md): it starts and ends
+/// at rest; at a joint where the heading changes by more than turnToleranceDeg it stops and turns
+/// on the spot at omegaMax; between such corners it drives the pieces without stopping, at most
+/// vMax on a line and min(vMax, omegaMax·ρ) on an arc of radius ρ, accelerating and braking at aMax
+/// (the time-optimal speed profile under these limits).
+double robotTraversalTime(const Path& path, const MetricOptions& options = {});
 
 /// Area of F ∩ (path ⊕ disc(r)). Exact construction with CGAL (circle-segment traits) when every
 /// line segment is axis-parallel or has a rational unit direction and there are no arcs; returns

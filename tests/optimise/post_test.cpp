@@ -1,0 +1,136 @@
+// Path post-processing (issue 15): the chain's parsing and its exact re-validation, the `fillet`
+// processor on every planner's plans over the contract worlds, and the robot-time metrics.
+#include "helpers/checkers.h"
+
+#include <coverkit/geometry/cspace.h>
+#include <coverkit/geometry/error.h>
+#include <coverkit/geometry/metrics.h>
+#include <coverkit/optimise/processor.h>
+#include <coverkit/planners/registry.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace coverkit;
+
+namespace {
+
+/// A processor that moves every path's last point far outside the workspace: never valid.
+class BrokenProcessor : public optimise::PathProcessor {
+public:
+  std::string name() const override { return "test_broken"; }
+  std::string description() const override { return "test only: a path that leaves the workspace"; }
+  std::vector<planners::ParamSpec> params() const override { return {}; }
+  Plan process(const Problem&, const Plan& plan, const planners::ParamSet&) const override {
+    Plan out = plan;
+    for (Path& p : out.paths) p.segments.push_back(PathSegment::line(p.segments.back().to, {1e6, 1e6}));
+    out.statistics["moved"] = 1;
+    return out;
+  }
+};
+
+Metrics metricsOf(const planners::PlanningContext& ctx, const Plan& plan, const CSpace* cspace = nullptr) {
+  MetricOptions o;
+  o.coverable = true;
+  o.cspace = cspace;   // its helper C-spaces are built once per world
+  return computeMetrics(ctx.problem, ctx.cells, plan.paths, o);
+}
+
+}  // namespace
+
+TEST(PostProcessing, StepsParseAndBadOnesAreRefused) {
+  const auto s = optimise::parsePostStep("fillet:max_radius=0.3");
+  EXPECT_EQ(s.name, "fillet");
+  EXPECT_EQ(s.params.at("max_radius"), "0.3");
+  EXPECT_TRUE(optimise::parsePostStep("fillet").params.empty());
+  for (const char* bad : {"", ":max_radius=1", "fillet:max_radius", "fillet:=1", "fillet:max_radius=1;max_radius=2"})
+    EXPECT_NE(testing_helpers::inputErrorMessage([&] { optimise::parsePostStep(bad); }), "") << bad;
+  EXPECT_NE(testing_helpers::inputErrorMessage([] { optimise::checkPostSteps({{"no_such_processor", {}}}); }).find("known: fillet"),
+            std::string::npos);
+  EXPECT_NE(testing_helpers::inputErrorMessage([] { optimise::checkPostSteps({{"fillet", {{"max_radius", "-1"}}}}); }), "");
+  EXPECT_NE(testing_helpers::inputErrorMessage([] { optimise::checkPostSteps({{"fillet", {{"radius", "1"}}}}); }), "");
+}
+
+TEST(PostProcessing, AnInvalidResultIsRevertedAndReported) {
+  auto& reg = optimise::ProcessorRegistry::instance();
+  if (!reg.contains("test_broken")) reg.add("test_broken", [] { return std::make_unique<BrokenProcessor>(); });
+  const auto ctx = testing_helpers::contextFor(testing_helpers::contractWorlds()[1].second, Rational(1, 4));
+  const Plan plan = planners::runPlanner("stc", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+  const Plan out = optimise::postProcess(ctx.problem, plan, {{"test_broken", {}}, {"fillet", {}}});
+  EXPECT_EQ(out.statistics.at("post_test_broken_reverted"), 1);
+  EXPECT_EQ(out.statistics.at("post_test_broken_moved"), 1);
+  EXPECT_EQ(out.statistics.at("post_fillet_reverted"), 0);
+  EXPECT_GT(out.statistics.at("post_fillet_rounded"), 0);
+  EXPECT_TRUE(testing_helpers::planIsValid(ctx, out));
+}
+
+// The issue's bar: on every planner's plans over the contract worlds, `fillet` keeps the plan valid
+// (exactly), loses at most 0.5 percentage points of the coverable region, never adds turning,
+// turns, reversals or robot time.
+TEST(PostProcessing, FilletOnEveryPlannerOverTheContractWorlds) {
+  double worstLoss = 0;
+  std::size_t plans = 0, before = 0, after = 0;
+  for (const auto& [label, world] : testing_helpers::contractWorlds()) {
+    const auto ctx = testing_helpers::contextFor(world, testing_helpers::contractRadius(label));
+    const CSpace cspace(ctx.problem.workspace, ctx.problem.robots[0].radius);
+    for (const std::string& name : planners::Registry::instance().names()) {
+      SCOPED_TRACE(label + " " + name);
+      const Plan plan = planners::runPlanner(name, ctx, {});
+      if (!succeeded(plan.status)) continue;
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+      const Plan out = optimise::postProcess(ctx.problem, plan, {{"fillet", {}}});
+      EXPECT_EQ(out.statistics.at("post_fillet_reverted"), 0);
+      ASSERT_TRUE(testing_helpers::planIsValid(ctx, out));
+      const Metrics m0 = metricsOf(ctx, plan, &cspace), m1 = metricsOf(ctx, out, &cspace);
+      ASSERT_TRUE(m0.hasCoverable && m1.hasCoverable);
+      const double loss = m0.coverableCoverage - m1.coverableCoverage;
+      worstLoss = std::max(worstLoss, loss);
+      EXPECT_LE(loss, 0.005 + m0.coverableAreaError / m0.coverableArea);
+      EXPECT_LE(m1.turningAngleDeg, m0.turningAngleDeg * (1 + 1e-9) + 1e-9);
+      EXPECT_LE(m1.turns, m0.turns);
+      EXPECT_LE(m1.reversals, m0.reversals);
+      EXPECT_LE(m1.robotTime, m0.robotTime * (1 + 1e-9));
+      ++plans;
+      before += m0.turns;
+      after += m1.turns;
+    }
+  }
+  std::cout << plans << " plans: turns " << before << " -> " << after << ", worst coverage loss " << worstLoss * 100 << " pp\n";
+  EXPECT_LT(after, before / 2);
+}
+
+TEST(RobotTime, LinesCornersAndArcsAsTheModelSays) {
+  MetricOptions o;   // v 0.5 m/s, a 0.5 m/s², ω 1.5 rad/s
+  Path line;
+  line.segments = {PathSegment::line({0, 0}, {4, 0})};
+  // accelerate 1 s over 0.25 m, cruise 3.5 m at 0.5 m/s, brake 1 s
+  EXPECT_NEAR(robotTraversalTime(line, o), 1 + 7 + 1, 1e-12);
+  Path shortLine;
+  shortLine.segments = {PathSegment::line({0, 0}, {0.125, 0})};
+  // never reaches 0.5 m/s: peak sqrt(a L) = 0.25, 2 × 0.5 s
+  EXPECT_NEAR(robotTraversalTime(shortLine, o), 1.0, 1e-12);
+  Path corner;
+  corner.segments = {PathSegment::line({0, 0}, {4, 0}), PathSegment::line({4, 0}, {4, 4})};
+  EXPECT_NEAR(robotTraversalTime(corner, o), 2 * 9 + (M_PI / 2) / 1.5, 1e-12);
+  // the same corner as a quarter circle of radius 0.2 between the lines: no stop; on the arc at most
+  // ω ρ = 0.3 m/s, so the robot brakes from 0.5 to 0.3 before it (0.16 m, 0.4 s) and speeds up after
+  Path round;
+  round.segments = {PathSegment::line({0, 0}, {3.8, 0}), PathSegment::arc({3.8, 0}, {4, 0.2}, {3.8, 0.2}, true),
+                    PathSegment::line({4, 0.2}, {4, 4})};
+  const double arc = M_PI * 0.2 / 2;
+  const double expected = 1 + (3.8 - 0.25 - 0.16) / 0.5 + 0.4 + arc / 0.3 + 0.4 + (3.8 - 0.16 - 0.25) / 0.5 + 1;
+  EXPECT_NEAR(robotTraversalTime(round, o), expected, 1e-9);
+  EXPECT_LT(robotTraversalTime(round, o), robotTraversalTime(corner, o));
+  // reversals and curvature
+  Path back;
+  back.segments = {PathSegment::line({0, 0}, {1, 0}), PathSegment::line({1, 0}, {0, 0.1}), PathSegment::arc({0, 0.1}, {-0.25, 0.35}, {0, 0.35}, false)};
+  Problem problem;
+  problem.workspace.regions.push_back({{{-1, -1}, {2, -1}, {2, 2}, {-1, 2}}, {}});
+  problem.robots.push_back({Rational(1, 20), Point{0, 0}});
+  o.area = false;
+  const Metrics m = computeMetrics(problem, classifyCells(problem.workspace, Rational(1, 10)), {back}, o);
+  EXPECT_EQ(m.reversals, 1u);
+  EXPECT_NEAR(m.maxCurvature, 4, 1e-9);
+}
