@@ -1,5 +1,7 @@
 // The `coverage-vs-time` kind of the engine: Smooth-STC paper, Fig 13, coverage of the coverable
-// region against time at constant speed. A case is one seeded world, a row one planner on it with
+// region against time: the differential-drive robot's time (robot_time_s, docs/metrics.md: a corner
+// costs a stop and a turn on the spot) by default, or constant speed as the paper's figure (`time:
+// constant`). A case is one seeded world, a row one planner on it with
 // its coverage at each step of the world's time axis (columns coverage_step_K and
 // coverage_error_step_K). See paper_experiments.h.
 #include "charts.h"
@@ -37,14 +39,20 @@ Path prefix(const Path& path, double length) {
 class TimeExperiment : public Experiment {
 public:
   explicit TimeExperiment(const std::string& configFile) : file_(configFile) {
-    ec_ = loadExperimentConfig(configFile, 5, {"kind", "planners", "radius", "speed", "steps", "worlds"});
+    ec_ = loadExperimentConfig(configFile, 5, {"kind", "planners", "radius", "time", "speed", "v_max", "a_max", "omega_max", "steps", "worlds"});
     const YAML::Node& cfg = ec_.root;
     rText_ = configValue<std::string>(cfg, configFile, "radius", "0.25");
     r_ = parseRational(rText_, configFile + ": radius", rText_);
     if (r_ <= 0) throw InputError(configFile, "radius", rText_ + ": must be > 0");
     checkRadiusOnWorlds(r_, ec_, configFile, "radius", rText_);
+    time_ = configValue<std::string>(cfg, configFile, "time", "robot");
+    if (time_ != "robot" && time_ != "constant") throw InputError(configFile, "time", time_ + ": must be robot or constant");
     speed_ = configValue<double>(cfg, configFile, "speed", 0.2);
     if (!(speed_ > 0)) throw InputError(configFile, "speed", "must be > 0");
+    for (auto [key, value] : {std::pair<const char*, double*>{"v_max", &drive_.vMax}, {"a_max", &drive_.aMax}, {"omega_max", &drive_.omegaMax}}) {
+      *value = configValue<double>(cfg, configFile, key, *value);
+      if (!(*value > 0) || !std::isfinite(*value)) throw InputError(configFile, key, "must be a finite number > 0");
+    }
     steps_ = configValue<int>(cfg, configFile, "steps", 12);
     if (steps_ < 1 || steps_ > 1000) throw InputError(configFile, "steps", std::to_string(steps_) + ": must be in 1..1000");
     identity_ = "coverage-vs-time\n" + datasets::readTextFile(configFile);
@@ -76,11 +84,15 @@ public:
     MetricOptions mo = defaultMetricOptions();
     mo.cspace = &cspace;
     mo.speed = speed_;
+    mo.vMax = drive_.vMax;
+    mo.aMax = drive_.aMax;
+    mo.omegaMax = drive_.omegaMax;
     std::vector<RunResult> runs;
     double horizon = 0;
+    auto finish = [&](const RunResult& r) { return time_ == "robot" ? r.metrics.robotTime : r.metrics.length / speed_; };
     for (const std::string& p : ec_.planners) {
       runs.push_back(runSpec(ctx, p, file_, mo));
-      horizon = std::max(horizon, runs.back().metrics.length / speed_);
+      horizon = std::max(horizon, finish(runs.back()));
     }
     MetricOptions raster = mo;   // prefixes: covered area only, rasterised with its bound
     raster.coverable = false;
@@ -93,15 +105,16 @@ public:
       for (int k = 0; k <= steps_; ++k) {
         const double t = horizon * k / steps_;
         if (!res.validation.valid || res.metrics.coverableArea <= 0) continue;
-        if (t >= res.metrics.length / speed_) {
+        if (t >= finish(res)) {
           coverage[static_cast<std::size_t>(k)] = res.metrics.coverableCoverage;
         } else if (k > 0) {
-          const Metrics m = computeMetrics(ctx.problem, ctx.cells, {prefix(res.plan.paths[0], t * speed_)}, raster);
+          const double along = time_ == "robot" ? robotDistanceAt(res.plan.paths[0], t, mo) : t * speed_;
+          const Metrics m = computeMetrics(ctx.problem, ctx.cells, {prefix(res.plan.paths[0], along)}, raster);
           coverage[static_cast<std::size_t>(k)] = m.coveredArea / res.metrics.coverableArea;
           error[static_cast<std::size_t>(k)] = m.areaCoverageError * m.freeArea / res.metrics.coverableArea;
         }
       }
-      Row row{static_cast<std::int64_t>(ec_.seeds[i]), ec_.planners[p], res.metrics.length / speed_, horizon};
+      Row row{static_cast<std::int64_t>(ec_.seeds[i]), ec_.planners[p], finish(res), horizon};
       for (double c : coverage) row.emplace_back(c);
       for (double e : error) row.emplace_back(e);
       appendRun(row, res);
@@ -127,7 +140,11 @@ public:
     const datasets::PolygonWorldSpec& spec = ec_.worlds;
     std::ostringstream md;
     md << "# Coverage against time\n\n" << ec_.count << " seeded " << spec.width << "×" << spec.height << " polygon worlds, " << spec.count << " " << ec_.shape
-       << " obstacles, r = " << rText_ << ", speed " << speed_ << " m/s, default start. Each world's time axis is split in " << steps_
+       << " obstacles, r = " << rText_ << ", "
+       << (time_ == "robot" ? "a differential-drive robot (v_max " + fmt(drive_.vMax, 2) + " m/s, a_max " + fmt(drive_.aMax, 2) + " m/s², ω_max " +
+                                  fmt(drive_.omegaMax, 2) + " rad/s; a corner costs a stop and a turn on the spot)"
+                            : "constant speed " + fmt(speed_, 2) + " m/s")
+       << ", default start. Each world's time axis is split in " << steps_
        << " steps up to the slowest planner's finish; coverage of the coverable region, averaged over the worlds (a planner that has "
        << "finished keeps its final coverage). Invalid plans: " << invalid << ".\n\n| planner | mean time to finish (s) |";
     for (int k = 1; k <= steps_; ++k) md << " " << fmt(100.0 * k / steps_, 0) << " % |";
@@ -152,6 +169,8 @@ private:
   ExperimentConfig ec_;
   Rational r_;
   double speed_ = 0.2;
+  std::string time_ = "robot";
+  MetricOptions drive_;   ///< v_max, a_max, omega_max
   int steps_ = 12;
 };
 

@@ -35,54 +35,102 @@ std::pair<double, double> tangents(const PathSegment& s) {
   return {heading(s.center, s.from) + turn, heading(s.center, s.to) + turn};
 }
 
-/// Time-optimal drive over one run of pieces (no stop inside), from rest to rest: per piece its
-/// length and speed limit. Node speeds from a forward and a backward pass under the acceleration,
-/// then per piece: accelerate, cruise at its limit (or peak below it), brake.
-double runTime(const std::vector<std::pair<double, double>>& run, double a) {
-  const std::size_t n = run.size();
-  if (n == 0) return 0;
-  std::vector<double> node(n + 1, 0);
-  for (std::size_t k = 1; k < n; ++k) node[k] = std::min(run[k - 1].second, run[k].second);
-  for (std::size_t k = 1; k <= n; ++k) node[k] = std::min(node[k], std::sqrt(node[k - 1] * node[k - 1] + 2 * a * run[k - 1].first));
-  for (std::size_t k = n; k-- > 0;) node[k] = std::min(node[k], std::sqrt(node[k + 1] * node[k + 1] + 2 * a * run[k].first));
-  double t = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double L = run[k].first, V = run[k].second, u = node[k], w = node[k + 1];
-    if (L <= 0) continue;
-    const double peak = std::min(V, std::sqrt((u * u + w * w + 2 * a * L) / 2));
-    const double d1 = (peak * peak - u * u) / (2 * a), d2 = (peak * peak - w * w) / (2 * a);
-    const double cruise = std::max(0.0, L - d1 - d2);
-    t += (peak - u) / a + (peak - w) / a + (peak > 0 ? cruise / peak : 0);
+/// One piece as the robot drives it: the seconds it first turns on the spot (a corner before it),
+/// its length, and its speeds at the start, at most, and at the end.
+struct Motion {
+  double turn = 0, length = 0, u = 0, peak = 0, w = 0;
+};
+
+/// Seconds to drive a motion (after its turn), accelerating and braking at a.
+double driveTime(const Motion& m, double a) {
+  if (m.length <= 0) return 0;
+  const double d1 = (m.peak * m.peak - m.u * m.u) / (2 * a), d2 = (m.peak * m.peak - m.w * m.w) / (2 * a);
+  const double cruise = std::max(0.0, m.length - d1 - d2);
+  return (m.peak - m.u) / a + (m.peak - m.w) / a + (m.peak > 0 ? cruise / m.peak : 0);
+}
+
+/// Distance driven t seconds into a motion's drive (0 ≤ t ≤ driveTime).
+double driveDistance(const Motion& m, double a, double t) {
+  const double ta = (m.peak - m.u) / a, d1 = (m.peak * m.peak - m.u * m.u) / (2 * a), d2 = (m.peak * m.peak - m.w * m.w) / (2 * a);
+  const double cruise = std::max(0.0, m.length - d1 - d2), tc = m.peak > 0 ? cruise / m.peak : 0;
+  if (t <= ta) return m.u * t + a * t * t / 2;
+  if (t <= ta + tc) return d1 + m.peak * (t - ta);
+  const double tau = t - ta - tc;
+  return std::min(m.length, d1 + cruise + m.peak * tau - a * tau * tau / 2);
+}
+
+/// The path as the robot drives it (robotTraversalTime): per piece its turn before and its speeds.
+/// Corners end runs; per run, speeds at the joints from a forward and a backward pass under the
+/// acceleration, then per piece the peak: accelerate, cruise at its limit (or peak below it), brake.
+std::vector<Motion> motionsOf(const Path& path, const MetricOptions& o) {
+  const double tol = o.turnToleranceDeg * M_PI / 180, a = o.aMax;
+  std::vector<Motion> out;
+  std::vector<double> limit;
+  std::size_t runStart = 0;
+  auto closeRun = [&] {
+    const std::size_t n = out.size() - runStart;
+    if (n == 0) return;
+    std::vector<double> node(n + 1, 0);
+    for (std::size_t k = 1; k < n; ++k) node[k] = std::min(limit[runStart + k - 1], limit[runStart + k]);
+    for (std::size_t k = 1; k <= n; ++k) node[k] = std::min(node[k], std::sqrt(node[k - 1] * node[k - 1] + 2 * a * out[runStart + k - 1].length));
+    for (std::size_t k = n; k-- > 0;) node[k] = std::min(node[k], std::sqrt(node[k + 1] * node[k + 1] + 2 * a * out[runStart + k].length));
+    for (std::size_t k = 0; k < n; ++k) {
+      Motion& m = out[runStart + k];
+      m.u = node[k];
+      m.w = node[k + 1];
+      m.peak = std::min(limit[runStart + k], std::sqrt((m.u * m.u + m.w * m.w + 2 * a * m.length) / 2));
+    }
+    runStart = out.size();
+  };
+  double prev = 0;
+  bool have = false;
+  for (const PathSegment& s : path.segments) {
+    const double len = s.length();
+    if (!(len > 0)) continue;
+    const auto [h0, h1] = tangents(s);
+    double turn = 0;
+    if (have) {
+      const double d = std::abs(wrap(h0 - prev));
+      if (d > tol) {   // a corner: stop, turn on the spot
+        closeRun();
+        turn = d / o.omegaMax;
+      }
+    }
+    double v = o.vMax;
+    if (s.kind == PathSegment::Kind::kArc) v = std::min(v, o.omegaMax * std::hypot(s.from.x - s.center.x, s.from.y - s.center.y));
+    Motion m;
+    m.turn = turn;
+    m.length = len;
+    out.push_back(m);
+    limit.push_back(v);
+    prev = h1;
+    have = true;
   }
-  return t;
+  closeRun();
+  return out;
 }
 
 }  // namespace
 
 double robotTraversalTime(const Path& path, const MetricOptions& o) {
   if (o.vMax <= 0 || o.aMax <= 0 || o.omegaMax <= 0) return 0;
-  const double tol = o.turnToleranceDeg * M_PI / 180;
-  std::vector<std::pair<double, double>> run;   // (length, speed limit)
-  double t = 0, prev = 0;
-  bool have = false;
-  for (const PathSegment& s : path.segments) {
-    const double len = s.length();
-    if (!(len > 0)) continue;
-    const auto [h0, h1] = tangents(s);
-    if (have) {
-      const double d = std::abs(wrap(h0 - prev));
-      if (d > tol) {   // a corner: stop, turn on the spot
-        t += runTime(run, o.aMax) + d / o.omegaMax;
-        run.clear();
-      }
-    }
-    double limit = o.vMax;
-    if (s.kind == PathSegment::Kind::kArc) limit = std::min(limit, o.omegaMax * std::hypot(s.from.x - s.center.x, s.from.y - s.center.y));
-    run.emplace_back(len, limit);
-    prev = h1;
-    have = true;
+  double t = 0;
+  for (const Motion& m : motionsOf(path, o)) t += m.turn + driveTime(m, o.aMax);
+  return t;
+}
+
+double robotDistanceAt(const Path& path, double seconds, const MetricOptions& o) {
+  if (o.vMax <= 0 || o.aMax <= 0 || o.omegaMax <= 0) return 0;
+  double t = 0, s = 0;
+  for (const Motion& m : motionsOf(path, o)) {
+    t += m.turn;
+    if (seconds <= t) return s;
+    const double drive = driveTime(m, o.aMax);
+    if (seconds <= t + drive) return s + driveDistance(m, o.aMax, seconds - t);
+    t += drive;
+    s += m.length;
   }
-  return t + runTime(run, o.aMax);
+  return s;
 }
 
 Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,

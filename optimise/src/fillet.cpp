@@ -64,6 +64,11 @@ public:
         const BoxD c = boxOf(segs[k + 1]);
         b = {std::min(b.xmin, c.xmin), std::min(b.ymin, c.ymin), std::max(b.xmax, c.xmax), std::max(b.ymax, c.ymax)};
       }
+      // a slot over more than 64 × 64 cells is checked at every query instead (few: long lanes)
+      if (static_cast<double>(key(b.xmax) - key(b.xmin) + 1) * static_cast<double>(key(b.ymax) - key(b.ymin) + 1) > 64 * 64) {
+        long_.push_back(k);
+        continue;
+      }
       for (long i = key(b.xmin); i <= key(b.xmax); ++i)
         for (long j = key(b.ymin); j <= key(b.ymax); ++j) grid_[cellKey(i, j)].push_back(k);
     }
@@ -71,15 +76,20 @@ public:
   void replace(std::size_t k, std::vector<PathSegment> now) { slots_[k] = std::move(now); }
   /// Whether some piece of a slot other than `skipA`, `skipB` passes within r of q.
   bool sweeps(PointD q, double r, std::size_t skipA, std::size_t skipB) const {
+    auto near = [&](std::size_t k) {
+      if (k == skipA || k == skipB) return false;
+      for (const PathSegment& s : slots_[k])
+        if (distToPiece(q, s) <= r) return true;
+      return false;
+    };
+    for (std::size_t k : long_)
+      if (near(k)) return true;
     for (long i = key(q.x - r); i <= key(q.x + r); ++i)
       for (long j = key(q.y - r); j <= key(q.y + r); ++j) {
         const auto it = grid_.find(cellKey(i, j));
         if (it == grid_.end()) continue;
-        for (std::size_t k : it->second) {
-          if (k == skipA || k == skipB) continue;
-          for (const PathSegment& s : slots_[k])
-            if (distToPiece(q, s) <= r) return true;
-        }
+        for (std::size_t k : it->second)
+          if (near(k)) return true;
       }
     return false;
   }
@@ -90,11 +100,15 @@ private:
     const double R = dist(s.from, s.center);
     return {s.center.x - R, s.center.y - R, s.center.x + R, s.center.y + R};
   }
-  long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
-  static long long cellKey(long i, long j) { return (static_cast<long long>(i) << 32) ^ (static_cast<long long>(j) & 0xffffffffLL); }
+  /// The cell of a coordinate, clamped to ±2^40 cells (a cell of r and coordinates up to 10^15).
+  long key(double v) const { return static_cast<long>(std::clamp(std::floor(v / cell_), -1099511627776.0, 1099511627776.0)); }
+  static unsigned long long cellKey(long i, long j) {
+    return (static_cast<unsigned long long>(i) * 0x9E3779B97F4A7C15ULL) ^ static_cast<unsigned long long>(j);
+  }
   std::vector<std::vector<PathSegment>> slots_;
   double cell_;
-  std::unordered_map<long long, std::vector<std::size_t>> grid_;
+  std::unordered_map<unsigned long long, std::vector<std::size_t>> grid_;
+  std::vector<std::size_t> long_;
 };
 
 }  // namespace

@@ -199,6 +199,7 @@ for c in coverage_vs_size coverage_vs_complexity coverage_vs_shape smooth_stc_ad
   "$CK" experiment sweep --check --config "$DATA/../../experiments/configs/$c.yaml" > /dev/null && ok || bad "shipped config $c refused"
 done
 "$CK" experiment coverage-vs-time --check > /dev/null && ok || bad "shipped coverage_vs_time.yaml refused"
+"$CK" experiment run "$DATA/../../experiments/configs/coverage_vs_time_constant.yaml" --check > /dev/null && ok || bad "shipped coverage_vs_time_constant.yaml refused"
 "$CK" experiment tracc-scenarios --check --out "$T/check-out" | grep -q "config checked: 3 cases" && [ ! -e "$T/check-out" ] && ok || bad "--check of tracc-scenarios"
 # an experiment's --out folder is created with its parents
 "$CK" experiment sweep --config "$T/cfg-good.yaml" --out "$T/new/deeper" > /dev/null && [ -s "$T/new/deeper/results.csv" ] && ok || bad "sweep into a new nested folder"
@@ -270,6 +271,10 @@ printf 'planners: [full_stc]\nvary: shape\nvalues: [discs, stars]\nradius: 0.5\n
 "$CK" experiment sweep --config "$T/shape.yaml" --out "$T/shape" > /dev/null && grep -q ',worlds,1,shape,discs,full_stc,0,0.5,default,exact_solution,1,' "$T/shape/results.csv" && grep -q ',worlds,1,shape,stars,full_stc,' "$T/shape/results.csv" && ok || bad "sweep over shapes: $(cat "$T/shape/results.csv" 2>/dev/null)"
 printf 'planners: [stc, full_stc]\nradius: 0.5\nsteps: 4\nworlds: {count: 1, width: 8, height: 8, obstacles: 2}\n' > "$T/time.yaml"
 "$CK" experiment coverage-vs-time --config "$T/time.yaml" --out "$T/time" --quiet > /dev/null && [ "$(csv_count "$T/time/results.csv" "r['planner'] == 'full_stc' and r['valid'] == '1' and 0 < float(r['coverage_step_2']) < float(r['coverage_step_4']) == float(r['coverable_coverage'])")" -eq 1 ] && grep -q '<svg' "$T/time/chart.svg" && ok || bad "coverage-vs-time: $(cat "$T/time/results.csv" 2>/dev/null)"
+printf 'time: fast\n' > "$T/time-bad2.yaml"
+expect_bad "time config time" "time-bad2.yaml: time: fast: must be robot or constant" experiment coverage-vs-time --config "$T/time-bad2.yaml" --out "$T/out.json"
+printf 'omega_max: -1\n' > "$T/time-bad3.yaml"
+expect_bad "time config omega_max" "time-bad3.yaml: omega_max: must be a finite number > 0" experiment coverage-vs-time --config "$T/time-bad3.yaml" --out "$T/out.json"
 printf 'speed: 0\n' > "$T/time-bad.yaml"
 expect_bad "time config speed" "time-bad.yaml: speed: must be > 0" experiment coverage-vs-time --config "$T/time-bad.yaml" --out "$T/out.json"
 printf 'vary: colour\n' > "$T/cvs-bad4.yaml"

@@ -107,6 +107,11 @@ TEST(RobotTime, LinesCornersAndArcsAsTheModelSays) {
   line.segments = {PathSegment::line({0, 0}, {4, 0})};
   // accelerate 1 s over 0.25 m, cruise 3.5 m at 0.5 m/s, brake 1 s
   EXPECT_NEAR(robotTraversalTime(line, o), 1 + 7 + 1, 1e-12);
+  // where the robot is: 1 s in it has accelerated over 0.25 m, 5 s in it has cruised 2 m more
+  EXPECT_NEAR(robotDistanceAt(line, 1, o), 0.25, 1e-12);
+  EXPECT_NEAR(robotDistanceAt(line, 5, o), 2.25, 1e-12);
+  EXPECT_NEAR(robotDistanceAt(line, 8.5, o), 4 - 0.5 * 0.5 * 0.5 * 0.5, 1e-12);
+  EXPECT_EQ(robotDistanceAt(line, 100, o), 4);
   Path shortLine;
   shortLine.segments = {PathSegment::line({0, 0}, {0.125, 0})};
   // never reaches 0.5 m/s: peak sqrt(a L) = 0.25, 2 × 0.5 s
@@ -114,6 +119,8 @@ TEST(RobotTime, LinesCornersAndArcsAsTheModelSays) {
   Path corner;
   corner.segments = {PathSegment::line({0, 0}, {4, 0}), PathSegment::line({4, 0}, {4, 4})};
   EXPECT_NEAR(robotTraversalTime(corner, o), 2 * 9 + (M_PI / 2) / 1.5, 1e-12);
+  EXPECT_EQ(robotDistanceAt(corner, 9 + 0.5, o), 4);   // turning on the spot at the corner
+  EXPECT_NEAR(robotDistanceAt(corner, 9 + M_PI / 3 + 1, o), 4.25, 1e-12);
   // the same corner as a quarter circle of radius 0.2 between the lines: no stop; on the arc at most
   // ω ρ = 0.3 m/s, so the robot brakes from 0.5 to 0.3 before it (0.16 m, 0.4 s) and speeds up after
   Path round;

@@ -82,6 +82,9 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
 /// vMax on a line and min(vMax, omegaMax·ρ) on an arc of radius ρ, accelerating and braking at aMax
 /// (the time-optimal speed profile under these limits).
 double robotTraversalTime(const Path& path, const MetricOptions& options = {});
+/// How far along `path` (arc length) that robot is after `seconds` (the whole length once it has
+/// finished): the prefix a coverage-against-time curve sweeps.
+double robotDistanceAt(const Path& path, double seconds, const MetricOptions& options = {});
 
 /// Area of F ∩ (path ⊕ disc(r)). Exact construction with CGAL (circle-segment traits) when every
 /// line segment is axis-parallel or has a rational unit direction and there are no arcs; returns
