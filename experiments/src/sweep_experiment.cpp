@@ -157,7 +157,7 @@ public:
 
   std::vector<std::pair<std::string, std::string>> summarise(const Table& t) const override {
     struct Acc {
-      double coverage = 0, overlap = 0, turns = 0, angle = 0, minCoverage = 1;
+      double coverage = 0, overlap = 0, turns = 0, angle = 0, reversals = 0, robotTime = 0, minCoverage = 1;
       std::size_t n = 0, invalid = 0, failed = 0;
     };
     std::map<std::string, std::vector<Acc>> acc;   // planner → setting
@@ -182,6 +182,8 @@ public:
       a.overlap += t.real(row, "swept_area_overlap");
       a.turns += t.real(row, "turns");
       a.angle += t.real(row, "turning_angle_deg");
+      a.reversals += t.real(row, "reversals");
+      a.robotTime += t.real(row, "robot_time_s");
       a.minCoverage = std::min(a.minCoverage, c);
     }
     const datasets::PolygonWorldSpec& base = ec_.worlds;
@@ -195,24 +197,28 @@ public:
       md << maps_.size() << " map files per setting, ";
     md << (vary_ == "radius" ? std::string("robot radius varied") : "r = " + fixedRadius_) << "; sub-cells 2r; " << startsText() << ". Coverage: covered area / "
        << "coverable area (the start's C-free component ⊕ disc). Overlap: swept area counted with multiplicity / covered area − 1. "
-       << "Plans that did not succeed count as coverage 0; invalid plans are counted and left out.\n\n"
-       << "| planner | " << vary_ << " | plans | mean coverage | min coverage | mean overlap | mean turns | mean turning angle (°) | not planned | invalid |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|\n";
-    std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries, turnSeries, angleSeries;
+       << "Plans that did not succeed count as coverage 0; invalid plans are counted and left out. Robot time: a differential-drive "
+       << "robot's (docs/metrics.md; a corner costs a stop and a turn on the spot).\n\n"
+       << "| planner | " << vary_ << " | plans | mean coverage | min coverage | mean overlap | mean turns | mean turning angle (°) | mean reversals | mean robot time (s) | not planned | invalid |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::map<std::string, std::vector<std::pair<double, double>>> coverageSeries, overlapSeries, turnSeries, angleSeries, timeSeries;
     for (const std::string& p : ec_.planners)
       for (std::size_t si = 0; si < settings_.size(); ++si) {
         const Acc& a = acc[p][si];
         const std::size_t valid = a.n - a.failed;
         const double mean = a.n ? a.coverage / static_cast<double>(a.n) : 0, overlap = valid ? a.overlap / static_cast<double>(valid) : 0;
         const double turns = valid ? a.turns / static_cast<double>(valid) : 0, angle = valid ? a.angle / static_cast<double>(valid) : 0;
+        const double reversals = valid ? a.reversals / static_cast<double>(valid) : 0, robotTime = valid ? a.robotTime / static_cast<double>(valid) : 0;
         md << "| " << p << " | " << values_[si] << " | " << a.n << " | " << fmt(mean, 4) << " | " << fmt(a.n ? a.minCoverage : 0, 4) << " | "
-           << fmt(overlap, 3) << " | " << fmt(turns, 1) << " | " << fmt(angle, 0) << " | " << a.failed << " | " << a.invalid << " |\n";
+           << fmt(overlap, 3) << " | " << fmt(turns, 1) << " | " << fmt(angle, 0) << " | " << fmt(reversals, 1) << " | " << fmt(robotTime, 0) << " | "
+           << a.failed << " | " << a.invalid << " |\n";
         const double x = vary_ == "radius" ? settings_[si].radius.get_d() : vary_ == "obstacles" ? static_cast<double>(settings_[si].spec.count)
                                                                                                    : static_cast<double>(si);
         coverageSeries[p].emplace_back(x, mean);
         overlapSeries[p].emplace_back(x, overlap);
         turnSeries[p].emplace_back(x, turns);
         angleSeries[p].emplace_back(x, angle);
+        timeSeries[p].emplace_back(x, robotTime);
       }
     if (vary_ == "shape") {
       md << "\nx positions in the chart: ";
@@ -220,8 +226,9 @@ public:
       md << ".\n";
     }
     const std::string xLabel = vary_ == "radius" ? "robot radius r" : vary_ == "obstacles" ? "obstacles per world" : "obstacle shape (see summary)";
-    const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns", "mean total turning angle (°)"},
-                                         xLabel, {coverageSeries, overlapSeries, turnSeries, angleSeries});
+    const std::string svg = lineChartSvg({"mean coverage of the coverable region", "mean overlap", "mean turns", "mean total turning angle (°)",
+                                          "mean robot time (s)"},
+                                         xLabel, {coverageSeries, overlapSeries, turnSeries, angleSeries, timeSeries});
     return {{"summary.md", md.str()}, {"chart.svg", svg}};
   }
 

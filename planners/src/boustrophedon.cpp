@@ -425,14 +425,14 @@ public:
   /// Rounds the joints of segs[from, end) where the heading turns by 1° to 175° and at least one
   /// of the two pieces is a line: an arc of radius r, r/2, ... or r/64 tangent to both (filletCorner),
   /// the arc and both shortened pieces checked exactly; a joint where none is clear keeps its
-  /// corner. A piece gives at most half its length to each end, a lane (isLane) at most
+  /// corner. A piece gives at most half its length to each end, a lane (isLane[i − laneBase]) at most
   /// r(1 − sin α)/cos α, α the angle of the other piece's tangent to the x axis: every point within
   /// r of the part of a lane cut off is then within r of the side pass through the lane's end
   /// (boustrophedon.h), so rounding loses no coverage.
-  void roundJoints(std::vector<PathSegment>& segs, std::size_t from, const std::vector<bool>& isLane) const {
+  void roundJoints(std::vector<PathSegment>& segs, std::size_t from, const std::vector<bool>& isLane, std::size_t laneBase = 0) const {
     if (segs.size() < from + 2) return;
-    std::vector<PathSegment> out(segs.begin(), segs.begin() + static_cast<std::ptrdiff_t>(from));
-    auto lane = [&](std::size_t i) { return i < isLane.size() && isLane[i]; };
+    std::vector<PathSegment> out;   // what replaces segs[from, end)
+    auto lane = [&](std::size_t i) { return i >= laneBase && i - laneBase < isLane.size() && isLane[i - laneBase]; };
     auto laneBound = [&](double h) {
       const double sa = std::abs(std::sin(h)), ca = std::abs(std::cos(h));
       return ca > 1e-9 ? r_ * (1 - sa) / ca : 0.0;
@@ -467,7 +467,8 @@ public:
       cur = next;
     }
     out.push_back(cur);
-    segs.swap(out);
+    segs.resize(from);
+    segs.insert(segs.end(), out.begin(), out.end());
   }
 
   /// A piece clear in the frame's C-free (radius r + μ), exactly.
@@ -779,18 +780,18 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     phaseTurns["turns_first_side"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
     bool atBottom = bottomFirst;
-    std::vector<bool> isLane(segs.size(), false);
+    std::vector<bool> isLane;   // per piece of segs[mark, end): a lane
     for (std::size_t j = m; ok && j-- > 0;) {
       const std::size_t at = segs.size();
       ok = walk.line(cur(), end(j, !atBottom), segs);
-      isLane.resize(segs.size(), false);
-      if (segs.size() > at) isLane[at] = true;
+      isLane.resize(segs.size() - mark, false);
+      if (segs.size() > at) isLane[at - mark] = true;
       atBottom = !atBottom;
       ++lanesTotal;
       if (ok && j > 0) ok = walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
     }
     // the serpentine's corners rounded: the side passes sweep what they cut (roundJoints)
-    if (ok && rounded) walk.roundJoints(segs, mark, isLane);
+    if (ok && rounded) walk.roundJoints(segs, mark, isLane, mark);
     phaseTurns["turns_lanes"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
     if (m != 2)   // two lanes: the serpentine's turn has followed the other side already
