@@ -125,8 +125,11 @@ Plan FilletProcessor::process(const Problem& problem, const Plan& plan, const pl
     const double r = rq.get_d(), maxRadius = params.number("max_radius") * r;
     ClearanceChecker check(problem.workspace, rq);
     // free space at sub-cells of r/2 for the guard: a point in a blocked sub-cell needs no sweeping
-    // (a partial sub-cell counts as free: the guard errs towards keeping corners)
-    const CellGrid cells = keepCoverage ? classifyCells(problem.workspace, rq / 2) : CellGrid();
+    // (a partial sub-cell counts as free: the guard errs towards keeping corners); on a map more
+    // than 4096 of them across, 1/4096 of its extent
+    const Box wb = problem.workspace.bbox();
+    const Rational extent = std::max(Rational(wb.xmax - wb.xmin), Rational(wb.ymax - wb.ymin));
+    const CellGrid cells = keepCoverage ? classifyCells(problem.workspace, std::max(Rational(rq / 2), Rational(extent / 4096))) : CellGrid();
     auto free = [&](PointD q) {
       CellIndex c;
       return cells.locateSubD(q, c) && cells.sub(c.col, c.row) != CellState::kBlocked;

@@ -12,10 +12,11 @@
 //    the guard: free points within r of the parts cut off must stay within r of the new pieces or
 //    of the rest of the path, but for an outer rim of width rim × r (default 0.04); sampled
 //    around the corner (24 directions at 1/3, 2/3 and all of (1 − rim)·r) and beside the cut-off
-//    parts, free space read from the workspace's sub-cells of r/2 (a partial sub-cell counts as
-//    free). A corner that nothing else sweeps gets a fillet of about rim·r/(1/cos(θ/2) − 1)
-//    (0.1 r at 90°); one whose sweep the path repeats nearby gets up to max_radius × r. Coverage is
-//    measured, not decided, here (doubles); clearance is decided exactly.
+//    parts, free space read from the workspace's sub-cells of r/2 (at least 1/4096 of the map's
+//    extent; a partial sub-cell counts as free). A corner that nothing else sweeps gets a fillet
+//    of about rim·r/(1/cos(θ/2) − 1) (0.1 r at 90°); one whose sweep the path repeats nearby gets
+//    up to max_radius × r. Coverage is measured, not decided, here (doubles); clearance is decided
+//    exactly.
 //  - max_radius is in robot radii, so one value suits every map; default 1.
 //  - "Largest": halving from max_radius until an arc is clear and kept (at most 10 times), then 5
 //    steps of bisection between it and the radius above.
