@@ -100,9 +100,11 @@ int runPlanCommand() {
   }
   outputs.commit();
   timer.end();
-  for (const auto& [k, v] : r.plan.timings)
-    if (k != "cells" && k.rfind("post ", 0) != 0) timer.part("plan", k, v);
-    else if (k != "cells") timer.part("post", k.substr(5), v);
+  for (const auto& [k, v] : r.plan.timings) {
+    if (k == "cells") continue;
+    const bool post = k.rfind("post ", 0) == 0;   // optimise::postProcess's steps
+    timer.part(post ? "post" : "plan", post ? k.substr(5) : k, v);
+  }
   for (const auto& [k, v] : r.metrics.seconds) timer.part("metrics", k, v);
   if (o.speed.timings) std::cerr << timer.report();
   std::cout << o.planner << ": " << toString(r.plan.status) << (r.plan.message.empty() ? "" : " (" + r.plan.message + ")") << "; valid "

@@ -78,4 +78,64 @@ bool filletCorner(const PathSegment& a, const PathSegment& b, double rho, PathSe
   return true;
 }
 
+FilletCount roundCorners(std::vector<PathSegment>& segs, std::size_t from, const FilletSearch& search,
+                         const std::function<double(std::size_t, const PathSegment&, const PathSegment&, bool)>& room,
+                         const std::function<bool(std::size_t, const PathSegment&, const PathSegment&, const PathSegment&, const PathSegment&,
+                                                  const PathSegment&)>& accept,
+                         const std::function<void(std::size_t, const PathSegment&, const PathSegment&, const PathSegment&, double)>& rounded) {
+  FilletCount count;
+  if (segs.size() < from + 2) return count;
+  const double minTurn = search.minTurnDeg * M_PI / 180, maxTurn = search.maxTurnDeg * M_PI / 180;
+  std::vector<PathSegment> out;   // what replaces segs[from, end)
+  PathSegment cur = segs[from];
+  for (std::size_t i = from; i + 1 < segs.size(); ++i) {
+    PathSegment next = segs[i + 1];
+    const double theta = std::abs(turnAt(cur, next));
+    count.corners += theta > minTurn;
+    const bool line = cur.kind == PathSegment::Kind::kLine || next.kind == PathSegment::Kind::kLine;
+    if (theta > minTurn && theta < maxTurn && line && cur.length() > 0 && next.length() > 0) {
+      const double room1 = std::min(cur.length(), room(i, cur, next, true)), room2 = room(i + 1, next, cur, false);
+      auto attempt = [&](double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
+        return filletCorner(cur, next, rho, a2, f, b2) && cur.length() - a2.length() <= room1 && next.length() - b2.length() <= room2 &&
+               accept(i, cur, next, a2, f, b2);
+      };
+      PathSegment a2, f, b2;
+      double ok = 0, bad = 0;
+      for (double rho = search.maxRadius; rho >= search.minRadius && rho > 0; rho /= 2) {
+        if (attempt(rho, a2, f, b2)) {
+          ok = rho;
+          break;
+        }
+        bad = rho;
+      }
+      if (ok > 0) {
+        for (int step = 0; step < search.bisections && bad > 0; ++step) {
+          const double mid = (ok + bad) / 2;
+          PathSegment ma, mf, mb;
+          if (attempt(mid, ma, mf, mb)) {
+            ok = mid;
+            a2 = ma;
+            f = mf;
+            b2 = mb;
+          } else {
+            bad = mid;
+          }
+        }
+        out.push_back(a2);
+        out.push_back(f);
+        if (rounded) rounded(i, a2, f, b2, ok);
+        ++count.rounded;
+        cur = b2;
+        continue;
+      }
+    }
+    out.push_back(cur);
+    cur = next;
+  }
+  out.push_back(cur);
+  segs.resize(from);
+  segs.insert(segs.end(), out.begin(), out.end());
+  return count;
+}
+
 }  // namespace coverkit

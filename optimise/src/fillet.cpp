@@ -139,95 +139,56 @@ Plan FilletProcessor::process(const Problem& problem, const Plan& plan, const pl
       if (!(s.kind == PathSegment::Kind::kLine && s.from.x == s.to.x && s.from.y == s.to.y)) segs.push_back(s);
     if (segs.size() < 2) continue;
     Sweeps rest(segs, r);
-    std::vector<PathSegment> res;
-    PathSegment cur = segs[0];
-    for (std::size_t i = 0; i + 1 < segs.size(); ++i) {
-      PathSegment next = segs[i + 1];
-      const double theta = std::abs(turnAt(cur, next));
-      const bool corner = theta > M_PI / 180;
-      corners += corner;
-      if (!corner || theta >= 179 * M_PI / 180 || (cur.kind != PathSegment::Kind::kLine && next.kind != PathSegment::Kind::kLine)) {
-        res.push_back(cur);
-        cur = next;
-        continue;
-      }
-      // a piece gives at most half its length to each end
-      const double room1 = std::min(cur.length(), segs[i].length() / 2), room2 = next.length() / 2;
-      // the guard: every free point within r of the parts cut off is within r of the new pieces or
-      // of the rest of the path, but for an outer rim of rim·r (sampled: around the corner at 1/3,
-      // 2/3 and all of (1 − rim)·r in 24 directions, and beside the cut-off parts)
-      auto keeps = [&](const PathSegment& a2, const PathSegment& f, const PathSegment& b2) {
-        if (!keepCoverage) return true;
-        const PathSegment cut1 = PathSegment::line(a2.to, cur.to);
-        const PathSegment cut2 = next.kind == PathSegment::Kind::kLine ? PathSegment::line(next.from, b2.from)
-                                                                       : PathSegment::arc(next.from, b2.from, next.center, next.ccw);
-        std::vector<PointD> samples;
-        const PointD c = cur.to;
-        for (int a = 0; a < 24; ++a)
-          for (double f3 : {reach / 3, 2 * reach / 3, reach})
-            samples.push_back({c.x + f3 * r * std::cos(a * M_PI / 12), c.y + f3 * r * std::sin(a * M_PI / 12)});
-        for (const PathSegment* s : {&cut1, &cut2})
-          for (double t : {0.25, 0.5, 0.75, 1.0}) {
-            const PointD p = s->kind == PathSegment::Kind::kLine ? PointD{s->from.x + t * (s->to.x - s->from.x), s->from.y + t * (s->to.y - s->from.y)}
-                                                                 : PointD{s->from.x + t * (s->to.x - s->from.x), s->from.y + t * (s->to.y - s->from.y)};
-            const double h = headingOf(*s, false) + M_PI / 2;
-            for (double side : {-1.0, 1.0})
-              for (double f2 : {reach / 2, reach}) samples.push_back({p.x + side * f2 * r * std::cos(h), p.y + side * f2 * r * std::sin(h)});
-          }
-        for (const PointD& q : samples) {
-          if (std::min(distToPiece(q, cut1), distToPiece(q, cut2)) > r) continue;   // not the cut-off parts' sweep
-          if (distToPiece(q, a2) <= r || distToPiece(q, f) <= r || distToPiece(q, b2) <= r) continue;
-          if (!free(q) || rest.sweeps(q, r, i, i + 1)) continue;
-          return false;
+    std::vector<bool> refused(segs.size(), false), done(segs.size(), false);
+    // the guard: every free point within r of the parts cut off is within r of the new pieces or
+    // of the rest of the path, but for an outer rim of rim·r (sampled: around the corner at 1/3,
+    // 2/3 and all of (1 − rim)·r in 24 directions, and beside the cut-off parts, at their chords)
+    auto keeps = [&](std::size_t i, const PathSegment& cur, const PathSegment& next, const PathSegment& a2, const PathSegment& f,
+                     const PathSegment& b2) {
+      const PathSegment cut1 = PathSegment::line(a2.to, cur.to);
+      const PathSegment cut2 = next.kind == PathSegment::Kind::kLine ? PathSegment::line(next.from, b2.from)
+                                                                     : PathSegment::arc(next.from, b2.from, next.center, next.ccw);
+      std::vector<PointD> samples;
+      const PointD c = cur.to;
+      for (int a = 0; a < 24; ++a)
+        for (double f3 : {reach / 3, 2 * reach / 3, reach})
+          samples.push_back({c.x + f3 * r * std::cos(a * M_PI / 12), c.y + f3 * r * std::sin(a * M_PI / 12)});
+      for (const PathSegment* s : {&cut1, &cut2})
+        for (double t : {0.25, 0.5, 0.75, 1.0}) {
+          const PointD p{s->from.x + t * (s->to.x - s->from.x), s->from.y + t * (s->to.y - s->from.y)};
+          const double h = headingOf(*s, false) + M_PI / 2;
+          for (double side : {-1.0, 1.0})
+            for (double f2 : {reach / 2, reach}) samples.push_back({p.x + side * f2 * r * std::cos(h), p.y + side * f2 * r * std::sin(h)});
         }
-        return true;
-      };
-      bool refused = false;
-      auto attempt = [&](double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
-        if (!filletCorner(cur, next, rho, a2, f, b2) || cur.length() - a2.length() > room1 || next.length() - b2.length() > room2) return false;
-        if (!keeps(a2, f, b2)) {
-          refused = true;
-          return false;
-        }
-        return clearPiece(check, f) && clearPiece(check, a2) && clearPiece(check, b2);
-      };
-      PathSegment a2, f, b2;
-      double ok = 0, bad = 0;
-      for (double rho = maxRadius; rho >= maxRadius / 1024; rho /= 2) {
-        if (attempt(rho, a2, f, b2)) {
-          ok = rho;
-          break;
-        }
-        bad = rho;
+      for (const PointD& q : samples) {
+        if (std::min(distToPiece(q, cut1), distToPiece(q, cut2)) > r) continue;   // not the cut-off parts' sweep
+        if (distToPiece(q, a2) <= r || distToPiece(q, f) <= r || distToPiece(q, b2) <= r) continue;
+        if (!free(q) || rest.sweeps(q, r, i, i + 1)) continue;
+        return false;
       }
-      if (ok == 0) {
-        keptForCoverage += refused;
-        res.push_back(cur);
-        cur = next;
-        continue;
+      return true;
+    };
+    auto accept = [&](std::size_t i, const PathSegment& cur, const PathSegment& next, const PathSegment& a2, const PathSegment& f,
+                      const PathSegment& b2) {
+      if (keepCoverage && !keeps(i, cur, next, a2, f, b2)) {
+        refused[i] = true;
+        return false;
       }
-      PathSegment ba = a2, bf = f, bb = b2;
-      for (int step = 0; step < 5 && bad > 0; ++step) {
-        const double mid = (ok + bad) / 2;
-        if (attempt(mid, a2, f, b2)) {
-          ok = mid;
-          ba = a2;
-          bf = f;
-          bb = b2;
-        } else {
-          bad = mid;
-        }
-      }
-      res.push_back(ba);
-      res.push_back(bf);
-      rest.replace(i, {ba, bf});
-      rest.replace(i + 1, {bb});
-      cur = bb;
-      ++rounded;
-      radii += ok / r;
-    }
-    res.push_back(cur);
-    out.paths[k].segments = std::move(res);
+      return clearPiece(check, f) && clearPiece(check, a2) && clearPiece(check, b2);
+    };
+    auto made = [&](std::size_t i, const PathSegment& a2, const PathSegment& f, const PathSegment& b2, double radius) {
+      rest.replace(i, {a2, f});
+      rest.replace(i + 1, {b2});
+      done[i] = true;
+      radii += radius / r;
+    };
+    // a piece gives at most half its length to each end
+    const auto room = [&](std::size_t i, const PathSegment&, const PathSegment&, bool) { return segs[i].length() / 2; };
+    const FilletCount n = roundCorners(segs, 0, {maxRadius, maxRadius / 1024, 5, 1, 179}, room, accept, made);
+    corners += n.corners;
+    rounded += n.rounded;
+    for (std::size_t i = 0; i < refused.size(); ++i) keptForCoverage += refused[i] && !done[i];
+    out.paths[k].segments = std::move(segs);
   }
   out.statistics["corners"] = static_cast<double>(corners);
   out.statistics["rounded"] = static_cast<double>(rounded);

@@ -30,7 +30,7 @@ double turning(const Path& path) {
   for (std::size_t i = 0; i < path.segments.size(); ++i) {
     const PathSegment& s = path.segments[i];
     if (s.kind == PathSegment::Kind::kArc) t += std::abs(wrapAngle(headingOf(s, true) - headingOf(s, false)));
-    if (i > 0) t += std::abs(wrapAngle(headingOf(s, false) - headingOf(path.segments[i - 1], true)));
+    if (i > 0) t += std::abs(turnAt(path.segments[i - 1], s));
   }
   return t;
 }
@@ -43,7 +43,7 @@ double turnsIn(const std::vector<PathSegment>& segs, std::size_t from, std::size
   for (std::size_t i = from > 0 ? from - 1 : 0; i < to; ++i) {
     const PathSegment& s = segs[i];
     if (s.kind == PathSegment::Kind::kLine && s.from.x == s.to.x && s.from.y == s.to.y) continue;
-    if (prev && std::abs(wrapAngle(headingOf(s, false) - headingOf(*prev, true))) > M_PI / 180) ++n;
+    if (prev && std::abs(turnAt(*prev, s)) > M_PI / 180) ++n;
     prev = &s;
   }
   return n;
@@ -423,52 +423,25 @@ public:
   Extent extent(int k) const { return {regions_.xmin(k), regions_.xmax(k)}; }
 
   /// Rounds the joints of segs[from, end) where the heading turns by 1° to 175° and at least one
-  /// of the two pieces is a line: an arc of radius r, r/2, ... or r/64 tangent to both (filletCorner),
-  /// the arc and both shortened pieces checked exactly; a joint where none is clear keeps its
-  /// corner. A piece gives at most half its length to each end, a lane (isLane[i − laneBase]) at most
+  /// of the two pieces is a line (roundCorners): an arc of radius r, r/2, ... or r/64, the arc and
+  /// both shortened pieces checked exactly; a joint where none is clear keeps its corner. A piece
+  /// gives at most half its length to each end, a lane (isLane[i − laneBase]) at most
   /// r(1 − sin α)/cos α, α the angle of the other piece's tangent to the x axis: every point within
   /// r of the part of a lane cut off is then within r of the side pass through the lane's end
   /// (boustrophedon.h), so rounding loses no coverage.
   void roundJoints(std::vector<PathSegment>& segs, std::size_t from, const std::vector<bool>& isLane, std::size_t laneBase = 0) const {
-    if (segs.size() < from + 2) return;
-    std::vector<PathSegment> out;   // what replaces segs[from, end)
     auto lane = [&](std::size_t i) { return i >= laneBase && i - laneBase < isLane.size() && isLane[i - laneBase]; };
-    auto laneBound = [&](double h) {
+    auto room = [&](std::size_t i, const PathSegment&, const PathSegment& other, bool atEnd) {
+      if (!lane(i)) return segs[i].length() / 2;
+      const double h = headingOf(other, !atEnd);   // the other piece's tangent at the joint
       const double sa = std::abs(std::sin(h)), ca = std::abs(std::cos(h));
       return ca > 1e-9 ? r_ * (1 - sa) / ca : 0.0;
     };
-    PathSegment cur = segs[from];
-    for (std::size_t i = from; i + 1 < segs.size(); ++i) {
-      PathSegment next = segs[i + 1];
-      const double theta = wrapAngle(headingOf(next, false) - headingOf(cur, true));
-      const bool lines = cur.kind == PathSegment::Kind::kLine || next.kind == PathSegment::Kind::kLine;
-      if (lines && std::abs(theta) > M_PI / 180 && std::abs(theta) < 175 * M_PI / 180 && cur.length() > 0 && next.length() > 0) {
-        // what each piece may give: from cur's end, from next's start
-        const double room1 = std::min(cur.length(), lane(i) ? laneBound(headingOf(next, false)) : segs[i].length() / 2);
-        const double room2 = lane(i + 1) ? laneBound(headingOf(cur, true)) : next.length() / 2;
-        bool done = false;
-        for (double rho = r_; !done && rho >= r_ / 64; rho /= 2) {
-          PathSegment a2, f, b2;
-          if (!filletCorner(cur, next, rho, a2, f, b2)) continue;
-          if (cur.length() - a2.length() > room1 || next.length() - b2.length() > room2) continue;
-          checks_ += 3;
-          if (!clear(f) || !clear(a2) || !clear(b2)) continue;
-          out.push_back(a2);
-          out.push_back(f);
-          next = b2;
-          done = true;
-        }
-        if (done) {
-          cur = next;
-          continue;
-        }
-      }
-      out.push_back(cur);
-      cur = next;
-    }
-    out.push_back(cur);
-    segs.resize(from);
-    segs.insert(segs.end(), out.begin(), out.end());
+    auto accept = [&](std::size_t, const PathSegment&, const PathSegment&, const PathSegment& a2, const PathSegment& f, const PathSegment& b2) {
+      checks_ += 3;
+      return clear(f) && clear(a2) && clear(b2);
+    };
+    roundCorners(segs, from, {r_, r_ / 64, 0, 1, 175}, room, accept);
   }
 
   /// A piece clear in the frame's C-free (radius r + μ), exactly.
@@ -568,8 +541,10 @@ private:
     const double tiny = 1e-12 * (1 + std::abs(u.x) + std::abs(u.y));
     PointD cur = u;
     for (const Leg& g : legs) {
-      if (dist(cur, g.in) > tiny && !line(cur, g.in, out)) return false;
-      if (dist(cur, g.in) > tiny) cur = g.in;
+      if (dist(cur, g.in) > tiny) {
+        if (!line(cur, g.in, out)) return false;
+        cur = g.in;
+      }
       if (dist(cur, g.out) <= tiny) continue;
       if (!g.p.arc) {
         if (!line(cur, g.out, out)) return false;

@@ -3,6 +3,9 @@
 // fillet is clear is for the caller to decide, exactly (CSpace::arcClear, ClearanceChecker).
 #include <coverkit/geometry/path.h>
 
+#include <functional>
+#include <vector>
+
 namespace coverkit {
 
 /// The heading (radians) of a piece at its start or at its end.
@@ -19,5 +22,33 @@ PathSegment reversedPiece(const PathSegment& s);
 /// up to the first tangent point, f the arc, b2 b from the second. False when no such circle
 /// touches both pieces inside them (or both are arcs): then nothing is set.
 bool filletCorner(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2);
+
+/// How roundCorners looks for a corner's radius: halving from maxRadius while it is at least
+/// minRadius until one is accepted, then `bisections` steps between it and the radius above.
+struct FilletSearch {
+  double maxRadius = 0, minRadius = 0;
+  int bisections = 0;
+  double minTurnDeg = 1, maxTurnDeg = 179;   ///< corners turning more than min and less than max
+};
+
+struct FilletCount {
+  std::size_t corners = 0;   ///< joints of the range turning by more than minTurnDeg
+  std::size_t rounded = 0;
+};
+
+/// Rounds the corners of segs[from, end), in path order: at a joint turning by more than
+/// minTurnDeg and less than maxTurnDeg where at least one piece is a line, the fillet (filletCorner)
+/// of the largest radius the search finds such that piece i gives at most room(i, current i,
+/// i + 1, true) of its end, piece i + 1 at most room(i + 1, i + 1, current i, false) of its start
+/// (the pieces as they are then: i may have lost its start to the fillet before), and
+/// accept(i, current i, i + 1, a2, f, b2)
+/// holds (the caller's exact clearance and any other test); `rounded(i, a2, f, b2, radius)` hears
+/// of each one made. segs itself is unchanged until the end, so the callbacks may read the
+/// original pieces there.
+FilletCount roundCorners(std::vector<PathSegment>& segs, std::size_t from, const FilletSearch& search,
+                         const std::function<double(std::size_t, const PathSegment&, const PathSegment&, bool)>& room,
+                         const std::function<bool(std::size_t, const PathSegment&, const PathSegment&, const PathSegment&, const PathSegment&,
+                                                  const PathSegment&)>& accept,
+                         const std::function<void(std::size_t, const PathSegment&, const PathSegment&, const PathSegment&, double)>& rounded = {});
 
 }  // namespace coverkit
