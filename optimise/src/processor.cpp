@@ -41,7 +41,11 @@ PostStep parsePostStep(const std::string& text) {
 void checkPostSteps(const std::vector<PostStep>& steps) {
   for (const PostStep& s : steps) {
     const auto p = ProcessorRegistry::instance().create(s.name);
-    planners::ParamSet(p->params(), s.params, s.name, "path processor");
+    try {
+      planners::ParamSet(p->params(), s.params, s.name, "path processor");
+    } catch (const InputError& e) {   // ParamSet names --param; here the parameter came with --post
+      throw InputError("--post", s.name + ":" + e.place(), e.problem());
+    }
   }
 }
 

@@ -379,7 +379,8 @@ assert m["turns"] < s["post_fillet_corners"] and m["reversals"] == 0 and m["max_
 assert any(g["type"] == "arc" for g in d["robots"][0]["segments"])
 PYEOF
 expect_bad "plan --post: unknown processor" "--post: smoothen: unknown path processor (known: fillet" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post smoothen --out "$T/out.json"
-expect_bad "plan --post: parameter out of range" "max_radius=-1" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius=-1" --out "$T/out.json"
+expect_bad "plan --post: unknown parameter" "--post: fillet:radius: unknown parameter of path processor 'fillet'" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:radius=1" --out "$T/out.json"
+expect_bad "plan --post: parameter out of range" "--post: fillet:max_radius=-1: out of range" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius=-1" --out "$T/out.json"
 expect_bad "plan --post: parameter without a value" "--post: fillet:max_radius: expected KEY=VALUE" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius" --out "$T/out.json"
 expect_bad "plan --v-max not positive" "--v-max" plan --map "$T/room.wkt" --radius 0.25 --planner stc --v-max 0 --out "$T/out.json"
 printf 'planners: ["stc+fillet:max_radius=0.5", "stc+nope"]\n' > "$T/cvs-bad7.yaml"
