@@ -23,8 +23,41 @@ PathSegment reversedPiece(const PathSegment& s) {
   return s.kind == PathSegment::Kind::kLine ? PathSegment::line(s.to, s.from) : PathSegment::arc(s.to, s.from, s.center, !s.ccw);
 }
 
+namespace {
+
+/// Two arcs: the fillet's centre is at R ∓ rho from each arc's centre (− where the arc turns the
+/// same way as the corner), where those two circles cross nearest the joint.
+bool filletArcs(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
+  const double theta = turnAt(a, b);
+  if (theta == 0) return false;
+  const bool left = theta > 0;
+  const PointD oa = a.center, ob = b.center, p = a.to;
+  const double Ra = dist(a.from, oa), Rb = dist(b.from, ob);
+  const double ra = a.ccw == left ? Ra - rho : Ra + rho, rb = b.ccw == left ? Rb - rho : Rb + rho;
+  const double d = dist(oa, ob);
+  if (ra <= 0 || rb <= 0 || !(d > 0) || d > ra + rb || d < std::abs(ra - rb)) return false;
+  const double l = (ra * ra - rb * rb + d * d) / (2 * d), h = std::sqrt(std::max(0.0, ra * ra - l * l));
+  const PointD e{(ob.x - oa.x) / d, (ob.y - oa.y) / d}, q{oa.x + l * e.x, oa.y + l * e.y};
+  const PointD c1{q.x - h * e.y, q.y + h * e.x}, c2{q.x + h * e.y, q.y - h * e.x};
+  const PointD c = dist(c1, p) <= dist(c2, p) ? c1 : c2;
+  const PointD t1{oa.x + (c.x - oa.x) * Ra / ra, oa.y + (c.y - oa.y) * Ra / ra};
+  const PointD t2{ob.x + (c.x - ob.x) * Rb / rb, ob.y + (c.y - ob.y) * Rb / rb};
+  const PathSegment na = PathSegment::arc(a.from, t1, oa, a.ccw), nf = PathSegment::arc(t1, t2, c, left),
+                    nb = PathSegment::arc(t2, b.to, ob, b.ccw);
+  // tangent at both ends, each arc shortened (not wrapped round), less than a half turn
+  if (std::abs(turnAt(na, nf)) > 1e-6 || std::abs(turnAt(nf, nb)) > 1e-6) return false;
+  if (!(na.length() < a.length()) || !(nb.length() < b.length()) || !(nf.length() < rho * M_PI)) return false;
+  a2 = na;
+  f = nf;
+  b2 = nb;
+  return true;
+}
+
+}  // namespace
+
 bool filletCorner(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {
   if (!(rho > 0)) return false;
+  if (a.kind != PathSegment::Kind::kLine && b.kind != PathSegment::Kind::kLine) return filletArcs(a, b, rho, a2, f, b2);
   if (a.kind != PathSegment::Kind::kLine) {
     // an arc then a line: the line then the arc, travelled backwards
     PathSegment ra, rf, rb;
@@ -92,7 +125,7 @@ FilletCount roundCorners(std::vector<PathSegment>& segs, std::size_t from, const
     PathSegment next = segs[i + 1];
     const double theta = std::abs(turnAt(cur, next));
     count.corners += theta > minTurn;
-    const bool line = cur.kind == PathSegment::Kind::kLine || next.kind == PathSegment::Kind::kLine;
+    const bool line = search.arcPairs || cur.kind == PathSegment::Kind::kLine || next.kind == PathSegment::Kind::kLine;
     if (theta > minTurn && theta < maxTurn && line && cur.length() > 0 && next.length() > 0) {
       const double room1 = std::min(cur.length(), room(i, cur, next, true)), room2 = room(i + 1, next, cur, false);
       auto attempt = [&](double rho, PathSegment& a2, PathSegment& f, PathSegment& b2) {

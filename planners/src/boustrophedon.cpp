@@ -111,6 +111,20 @@ public:
   const std::vector<int>& cells(int k) const { return members_[static_cast<std::size_t>(k)]; }
   double xmin(int k) const { return d_.cells[static_cast<std::size_t>(cells(k).front())].xmin; }
   double xmax(int k) const { return d_.cells[static_cast<std::size_t>(cells(k).back())].xmax; }
+  /// The region fits in a box of w × h (its member cells' extents).
+  bool within(int k, double w, double h) const {
+    double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
+    for (int c : cells(k)) {
+      ylo = std::min(ylo, d_.cells[static_cast<std::size_t>(c)].ymin);
+      yhi = std::max(yhi, d_.cells[static_cast<std::size_t>(c)].ymax);
+    }
+    return xmax(k) - xmin(k) <= w && yhi - ylo <= h;
+  }
+  double area(int k) const {
+    double a = 0;
+    for (int c : cells(k)) a += d_.cells[static_cast<std::size_t>(c)].area;
+    return a;
+  }
   double ymid(int k) const {
     const DecomposedCell& c = d_.cells[static_cast<std::size_t>(cells(k).front())];
     return (c.ymin + c.ymax) / 2;
@@ -368,7 +382,8 @@ public:
 
   /// From lane end u to lane end v along the cell's top or bottom, τ inside it: lines and arcs
   /// parallel to the boundary's pieces, joined by short lines where two pieces meet at a corner.
-  /// Every piece is checked exactly; when one is not clear, chords refined at the middle instead.
+  /// Every piece is checked exactly; when one is not clear, chords close to the side instead
+  /// (hugChords).
   bool hug(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out) const {
     std::vector<PathSegment> tmp;
     if (hugAlong(cell, u, v, top, tmp)) {
@@ -444,6 +459,60 @@ public:
     roundCorners(segs, from, {r_, r_ / 64, 0, 1, 175}, room, accept);
   }
 
+  /// Rounds the corners left in segs[from, end) (a side pass's, and those where one part of a
+  /// sweep meets the next): a fillet of radius r, r/2, ... down to r/16 whose arc passes within
+  /// r/20 of the corner, the arc and both shortened pieces checked exactly. Every point within r
+  /// of what the fillet cuts off is within r + r/20 of the arc, so what it gives up is a lens at
+  /// most r/20 thick (a side pass's corner is where the disc reaches deepest into a notch of the
+  /// boundary). Sharper corners (turning by more than about 115°, where a fillet of r/16 is
+  /// farther off) keep their corner.
+  void roundSide(std::vector<PathSegment>& segs, std::size_t from) const {
+    auto room = [&](std::size_t i, const PathSegment&, const PathSegment&, bool) { return segs[i].length() / 2; };
+    auto accept = [&](std::size_t, const PathSegment& cur, const PathSegment&, const PathSegment& a2, const PathSegment& f, const PathSegment& b2) {
+      if (dist(cur.to, f.center) - dist(f.from, f.center) > r_ / 20) return false;
+      checks_ += 3;
+      return clear(f) && clear(a2) && clear(b2);
+    };
+    roundCorners(segs, from, {r_, r_ / 16, 0, 1, 175, true}, room, accept);
+  }
+
+  /// Drops the line pieces of segs[from, end) shorter than 1e-9·r: what a rounded corner leaves of
+  /// a piece, or a connector between two legs that meet within rounding. Their heading is
+  /// rounding noise, so each made one or two turns of its own. The line before (or else after) one
+  /// is stretched over it, checked exactly; where that is not clear the sliver stays. One between
+  /// two arcs is left out when under 1e-10 long.
+  void dropSlivers(std::vector<PathSegment>& segs, std::size_t from) const {
+    if (from > 0) --from;   // the joint with what came before
+    const double eps = 1e-9 * r_;
+    std::vector<PathSegment> out(segs.begin(), segs.begin() + static_cast<std::ptrdiff_t>(from));
+    for (std::size_t i = from; i < segs.size(); ++i) {
+      const PathSegment& g = segs[i];
+      if (g.kind == PathSegment::Kind::kLine && g.length() < eps) {
+        if (out.size() > from && out.back().kind == PathSegment::Kind::kLine) {
+          const PathSegment c = PathSegment::line(out.back().from, g.to);
+          ++checks_;
+          if (clear(c)) {
+            out.back() = c;
+            continue;
+          }
+        }
+        if (i + 1 < segs.size() && segs[i + 1].kind == PathSegment::Kind::kLine) {
+          const PathSegment c = PathSegment::line(g.from, segs[i + 1].to);
+          ++checks_;
+          if (clear(c)) {
+            segs[i + 1] = c;
+            continue;
+          }
+        }
+        // between two arcs: left out; the gap (under the validator's continuity tolerance, 1e-9)
+        // is the sliver itself, which is clear
+        if (g.length() < std::min(eps, 1e-10)) continue;
+      }
+      out.push_back(g);
+    }
+    segs.swap(out);
+  }
+
   /// A piece clear in the frame's C-free (radius r + μ), exactly.
   bool clear(const PathSegment& g) const {
     if (g.kind == PathSegment::Kind::kLine) return space_.segmentClear(exactOf(g.from), exactOf(g.to));
@@ -499,12 +568,59 @@ private:
     return d;
   }
 
+  /// A leg's curve: the line through p along d, or the circle about c of radius R.
+  struct Curve {
+    bool arc;
+    PointD p, d, c;
+    double R;
+  };
+  static Curve offsetCurve(const SidePiece& piece, PointD in, double dir, bool top, double t) {
+    if (!piece.arc) return {false, in, directionOf(piece, dir), {}, 0};
+    return {true, {}, {}, piece.center, piece.clockwise ? piece.rho + t : piece.rho - t};
+  }
+  /// The crossing of two curves nearest m (false when they do not cross).
+  static bool crossing(const Curve& a, const Curve& b, PointD m, PointD& out) {
+    std::vector<PointD> xs;
+    auto lineCircle = [&](const Curve& l, const Curve& c) {
+      const PointD w{l.p.x - c.c.x, l.p.y - c.c.y};
+      const double bq = l.d.x * w.x + l.d.y * w.y, cq = w.x * w.x + w.y * w.y - c.R * c.R, disc = bq * bq - cq;
+      if (disc < 0) return;
+      for (double sg : {-1.0, 1.0}) {
+        const double s = -bq + sg * std::sqrt(disc);
+        xs.push_back({l.p.x + s * l.d.x, l.p.y + s * l.d.y});
+      }
+    };
+    if (!a.arc && !b.arc) {
+      const double cross = a.d.x * b.d.y - a.d.y * b.d.x;
+      if (std::abs(cross) < 1e-9) return false;
+      const PointD w{b.p.x - a.p.x, b.p.y - a.p.y};
+      const double s = (w.x * b.d.y - w.y * b.d.x) / cross;
+      xs.push_back({a.p.x + s * a.d.x, a.p.y + s * a.d.y});
+    } else if (!a.arc) {
+      lineCircle(a, b);
+    } else if (!b.arc) {
+      lineCircle(b, a);
+    } else {
+      const double d = dist(a.c, b.c);
+      if (d == 0 || d > a.R + b.R || d < std::abs(a.R - b.R)) return false;
+      const double l = (a.R * a.R - b.R * b.R + d * d) / (2 * d), h = std::sqrt(std::max(0.0, a.R * a.R - l * l));
+      const PointD e{(b.c.x - a.c.x) / d, (b.c.y - a.c.y) / d}, q{a.c.x + l * e.x, a.c.y + l * e.y};
+      xs.push_back({q.x - h * e.y, q.y + h * e.x});
+      xs.push_back({q.x + h * e.y, q.y - h * e.x});
+    }
+    if (xs.empty()) return false;
+    out = xs[0];
+    for (const PointD& x : xs)
+      if (dist(x, m) < dist(out, m)) out = x;
+    return true;
+  }
+
   /// Along the side from u to v, τ inside it: one leg per boundary piece, on the piece's parallel
-  /// line or concentric circle, the legs joined where two pieces meet. Two line legs are joined at
-  /// the crossing of their parallel lines (one corner, as the boundary has); other legs at the
-  /// points τ along the normals at the joint (the same point where the pieces meet tangentially),
-  /// by a short line where they differ. Lane ends are points of these curves (laneEnd), so the
-  /// walk never steps back along a side.
+  /// line or concentric circle, the legs joined where two pieces meet: where the two offset
+  /// curves cross, nearest the joint (one corner, as the boundary has), or, where they do not
+  /// cross there (or a leg is vertical), at the points τ along the normals at the joint (the same
+  /// point where the pieces meet tangentially), by a short line where they differ. Lane ends are
+  /// points of these curves (laneEnd), so the walk never steps back along a side.
   bool hugAlong(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out) const {
     double lo, hi;
     const double dir = v.x >= u.x ? 1 : -1;
@@ -524,36 +640,49 @@ private:
       const double t = tau(lo, hi);
       legs.push_back({p, xs, xe, t, onOffset(p, xs, top, t), onOffset(p, xe, top, t)});
     }
+    const double tiny = 1e-12 * (1 + std::abs(u.x) + std::abs(u.y));
     for (std::size_t k = 1; k < legs.size(); ++k) {
       Leg &a = legs[k - 1], &b = legs[k];
       a.out = offsetOf(a.p, {b.xs, a.p.yAt(b.xs)}, top, a.t);
       b.in = offsetOf(b.p, {b.xs, b.p.yAt(b.xs)}, top, b.t);
-      if (a.p.arc || b.p.arc || a.p.b == 0 || b.p.b == 0) continue;
-      const PointD da = directionOf(a.p, dir), db = directionOf(b.p, dir);
-      const double cross = da.x * db.y - da.y * db.x;
-      if (std::abs(cross) < 1e-9) continue;
-      const PointD w{b.in.x - a.in.x, b.in.y - a.in.y};
-      const double s = (w.x * db.y - w.y * db.x) / cross;
-      const PointD at{a.in.x + s * da.x, a.in.y + s * da.y};
-      // ahead of a's entry and before b's exit
-      if (s > 0 && (b.out.x - at.x) * dir > 0) a.out = b.in = at;
+      if (dist(a.out, b.in) <= tiny || (!a.p.arc && a.p.b == 0) || (!b.p.arc && b.p.b == 0)) continue;
+      // where the two offset curves cross, nearest the joint: ahead of a's entry and before b's exit
+      const PointD m{(a.out.x + b.in.x) / 2, (a.out.y + b.in.y) / 2};
+      PointD at;
+      if (crossing(offsetCurve(a.p, a.in, dir, top, a.t), offsetCurve(b.p, b.in, dir, top, b.t), m, at) &&
+          (at.x - a.in.x) * dir > 0 && (b.out.x - at.x) * dir > 0 && dist(at, m) < 8 * std::max(a.t, b.t) + dist(a.out, b.in))
+        a.out = b.in = at;
     }
-    const double tiny = 1e-12 * (1 + std::abs(u.x) + std::abs(u.y));
     PointD cur = u;
-    for (const Leg& g : legs) {
+    auto follow = [&](const Leg& g) {
       if (dist(cur, g.in) > tiny) {
         if (!line(cur, g.in, out)) return false;
         cur = g.in;
       }
-      if (dist(cur, g.out) <= tiny) continue;
+      if (dist(cur, g.out) <= tiny) return true;
       if (!g.p.arc) {
         if (!line(cur, g.out, out)) return false;
         cur = g.out;
-      } else {
-        PointD end;
-        if (!arc(cur, g.out, g.p.center, out, end)) return false;
-        cur = end;
+        return true;
       }
+      PointD end;
+      if (!arc(cur, g.out, g.p.center, out, end)) return false;
+      cur = end;
+      return true;
+    };
+    for (std::size_t k = 0; k < legs.size(); ++k) {
+      const std::size_t mark = out.size();
+      const PointD from = cur;
+      if (follow(legs[k])) continue;
+      // a leg (or the way onto it) that is not clear, where the offset curves of a short piece and
+      // its neighbours do not meet as they should: chords close to the side to the leg's end (the
+      // end of the whole side for the last leg) instead, the other legs kept
+      out.resize(mark);
+      cur = from;
+      PointD to = v;
+      if (k + 1 < legs.size() && !laneEnd(cell, legs[k].xe, !top, to)) return false;
+      if (!hugChords(cell, cur, to, top, out)) return false;
+      cur = to;
     }
     if (dist(cur, v) > tiny || out.empty() || out.back().kind != PathSegment::Kind::kLine) return line(cur, v, out);
     // v within rounding of the last leg's end: that leg ends at v instead (checked again)
@@ -564,14 +693,42 @@ private:
     return line(cur, v, out);
   }
 
-  /// Chords between points τ inside the boundary, split at the middle until clear.
-  bool hugChords(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out, int depth = 0) const {
+  /// Chords between points τ inside the boundary: a chord is taken when it is clear and passes
+  /// within r/20 of the side (sampled at both ends and the middle of every boundary piece between
+  /// u and v); otherwise it is split at the sample farthest from it (a spike of C-free the chord
+  /// would cut off: the disc would not reach into it). Where that fails, or a chord is not clear,
+  /// split at the middle until clear (and from there on without the bound).
+  bool hugChords(int cell, PointD u, PointD v, bool top, std::vector<PathSegment>& out, int depth = 0, bool close = true) const {
+    if (close && depth <= 12) {
+      double worst = r_ / 20;
+      PointD split{};
+      bool found = false;
+      const double lo = std::min(u.x, v.x), hi = std::max(u.x, v.x), dx = v.x - u.x, dy = v.y - u.y, len2 = dx * dx + dy * dy;
+      for (const SidePiece& piece : regions_.side(cell, top, lo, hi)) {
+        const double a = std::max(lo, piece.x0), b = std::min(hi, piece.x1), e = (b - a) * 1e-3;
+        if (b <= a) continue;
+        for (double x : {a + e, (a + b) / 2, b - e}) {
+          PointD q;
+          if (x <= lo || x >= hi || !laneEnd(cell, x, !top, q)) continue;
+          const double t = len2 > 0 ? std::clamp(((q.x - u.x) * dx + (q.y - u.y) * dy) / len2, 0.0, 1.0) : 0;
+          const double d = std::hypot(q.x - u.x - t * dx, q.y - u.y - t * dy);
+          if (d > worst) {
+            worst = d;
+            split = q;
+            found = true;
+          }
+        }
+      }
+      const std::size_t mark = out.size();
+      if (found && hugChords(cell, u, split, top, out, depth + 1) && hugChords(cell, split, v, top, out, depth + 1)) return true;
+      out.resize(mark);   // (a side that jumps at a wall, where the sample's point is beyond a corner)
+    }
     if (line(u, v, out)) return true;
     if (depth > 12) return connect(cell, u, v, out);
     const double xm = (u.x + v.x) / 2;
     PointD m;
     if (xm == u.x || xm == v.x || !laneEnd(cell, xm, !top, m)) return connect(cell, u, v, out);
-    return hugChords(cell, u, m, top, out, depth + 1) && hugChords(cell, m, v, top, out, depth + 1);
+    return hugChords(cell, u, m, top, out, depth + 1, false) && hugChords(cell, m, v, top, out, depth + 1, false);
   }
 
   const Regions& regions_;
@@ -679,10 +836,19 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   std::vector<PathSegment> segs;
   auto cur = [&] { return segs.empty() ? entry : segs.back().to; };
   int here = startCell;
-  std::size_t skipped = 0, lanesTotal = 0, unreached = 0, broken = 0;
+  std::size_t skipped = 0, lanesTotal = 0, unreached = 0, broken = 0, pockets = 0;
+  double pocketArea = 0;
   bool timedOut = false;
   std::map<std::string, double> phaseTurns;
-  for (int cell : order) {
+  for (std::size_t at = 0; at < order.size(); ++at) {
+    const int cell = order[at];
+    // a pocket: a region within a box of r/4 × r/4 (a notch of a ragged boundary, a wedge where
+    // two C-obstacles nearly meet) is not visited on its own (boustrophedon.h)
+    if (at > 0 && regions.within(cell, r / 4, r / 4)) {
+      ++pockets;
+      pocketArea += regions.area(cell);
+      continue;
+    }
     if (stop.expired()) {
       timedOut = true;
       break;
@@ -694,14 +860,21 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       if (walk.laneEnd(cell, x, true, lo) && walk.laneEnd(cell, x, false, hi)) lanes.push_back({lo, hi});
     }
     if (lanes.empty()) continue;
-    // the corner nearest the robot: which end first (left or right) and which side first (the
-    // bottom or the top): the first pass runs along that side
+    // which end first (left or right) and which side first (the bottom or the top; the first
+    // pass runs along that side): the corner nearest the robot, the way out counted too (the
+    // sweep ends at the far end, on the side where the serpentine ends; with two lanes back at
+    // the first lane), to the next region's reference point
     bool fromRight = false, bottomFirst = true;
     double best = std::numeric_limits<double>::infinity();
+    const std::size_t m0 = lanes.size();
+    const bool endsOnFirstSide = m0 % 2 == 0;
     for (bool fr : {false, true})
       for (bool bf : {true, false}) {
         const auto& l = fr ? lanes.back() : lanes.front();
-        const double dd = dist(cur(), bf ? l.first : l.second);
+        const auto& e = m0 == 2 ? l : (fr ? lanes.front() : lanes.back());
+        const bool exitBottom = m0 == 2 ? bf : (endsOnFirstSide ? bf : !bf);
+        double dd = dist(cur(), bf ? l.first : l.second);
+        if (at + 1 < order.size()) dd += dist(exitBottom ? e.first : e.second, walk.reference(order[at + 1]));
         if (dd < best) {
           best = dd;
           fromRight = fr;
@@ -745,6 +918,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     walk.shortcut(route);
     if (rounded) walk.roundJoints(route, 0, {});
     segs.insert(segs.end(), route.begin(), route.end());
+    if (rounded) walk.roundSide(segs, mark0 > 0 ? mark0 - 1 : 0);
+    walk.dropSlivers(segs, mark0);
     phaseTurns["turns_transitions"] += turnsIn(segs, mark0, segs.size());
     std::size_t mark = segs.size();
     // the sweep (boustrophedon.h): along the first side to the far end, the lanes back in a
@@ -752,6 +927,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     bool ok = true;
     const std::size_t m = lanes.size();
     for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, bottomFirst), !bottomFirst, segs);
+    if (rounded) walk.roundSide(segs, mark > 0 ? mark - 1 : 0);
+    walk.dropSlivers(segs, mark);
     phaseTurns["turns_first_side"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
     bool atBottom = bottomFirst;
@@ -763,14 +940,20 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
       if (segs.size() > at) isLane[at - mark] = true;
       atBottom = !atBottom;
       ++lanesTotal;
-      if (ok && j > 0) ok = walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
+      // between two lanes: the chord when it is clear (both sides are followed by the side
+      // passes already); with two lanes there is no last pass, so the turn follows the side
+      if (ok && j > 0) ok = (m != 2 && walk.line(cur(), end(j - 1, atBottom), segs)) || walk.hug(cell, cur(), end(j - 1, atBottom), !atBottom, segs);
     }
     // the serpentine's corners rounded: the side passes sweep what they cut (roundJoints)
     if (ok && rounded) walk.roundJoints(segs, mark, isLane, mark);
+    if (rounded) walk.roundSide(segs, mark > 0 ? mark - 1 : 0);
+    walk.dropSlivers(segs, mark);
     phaseTurns["turns_lanes"] += turnsIn(segs, mark, segs.size());
     mark = segs.size();
     if (m != 2)   // two lanes: the serpentine's turn has followed the other side already
       for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
+    if (rounded) walk.roundSide(segs, mark > 0 ? mark - 1 : 0);
+    walk.dropSlivers(segs, mark);
     phaseTurns["turns_last_side"] += turnsIn(segs, mark, segs.size());
     if (!ok) ++broken;
     if (!ok) skipped += regions.cells(cell).size();   // what was swept before the break stays; its cells count as not done
@@ -796,6 +979,8 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   fp.stats["skipped_cells"] = static_cast<double>(skipped);
   fp.stats["cells_unreached"] = static_cast<double>(unreached);
   fp.stats["sweeps_broken"] = static_cast<double>(broken);
+  fp.stats["pockets"] = static_cast<double>(pockets);
+  fp.stats["pocket_area"] = pocketArea;
   std::size_t inComponent = 0;
   for (int k : order) inComponent += regions.cells(k).size();
   fp.stats["cells_in_component"] = static_cast<double>(inComponent);

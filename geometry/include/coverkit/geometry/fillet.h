@@ -18,9 +18,9 @@ double turnAt(const PathSegment& a, const PathSegment& b);
 PathSegment reversedPiece(const PathSegment& s);
 
 /// The arc of radius rho tangent to a (which ends at the joint) and to b (which begins there), on
-/// the inner side of the turn: a line and a line, a line and an arc, or an arc and a line. a2 is a
-/// up to the first tangent point, f the arc, b2 b from the second. False when no such circle
-/// touches both pieces inside them (or both are arcs): then nothing is set.
+/// the inner side of the turn: a line and a line, a line and an arc, an arc and a line, or two
+/// arcs. a2 is a up to the first tangent point, f the arc, b2 b from the second. False when no
+/// such circle touches both pieces inside them: then nothing is set.
 bool filletCorner(const PathSegment& a, const PathSegment& b, double rho, PathSegment& a2, PathSegment& f, PathSegment& b2);
 
 /// How roundCorners looks for a corner's radius: halving from maxRadius while it is at least
@@ -29,6 +29,7 @@ struct FilletSearch {
   double maxRadius = 0, minRadius = 0;
   int bisections = 0;
   double minTurnDeg = 1, maxTurnDeg = 179;   ///< corners turning more than min and less than max
+  bool arcPairs = false;                      ///< also corners between two arcs
 };
 
 struct FilletCount {
@@ -37,7 +38,8 @@ struct FilletCount {
 };
 
 /// Rounds the corners of segs[from, end), in path order: at a joint turning by more than
-/// minTurnDeg and less than maxTurnDeg where at least one piece is a line, the fillet (filletCorner)
+/// minTurnDeg and less than maxTurnDeg where at least one piece is a line (or any, with
+/// search.arcPairs), the fillet (filletCorner)
 /// of the largest radius the search finds such that piece i gives at most room(i, current i,
 /// i + 1, true) of its end, piece i + 1 at most room(i + 1, i + 1, current i, false) of its start
 /// (the pieces as they are then: i may have lost its start to the fillet before), and
