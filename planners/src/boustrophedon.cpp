@@ -1062,8 +1062,8 @@ std::vector<ParamSpec> BoustrophedonPlanner::params() const {
            "sweep chains of cells joined through vertical walls as one region (one entry, lanes across the walls); false: "
            "every cell on its own, as in the paper"},
           {"round", ParamType::kBool, "true", "true|false",
-           "round the serpentine's corners and the transitions' corners with arcs of radius up to r (each checked exactly; "
-           "the side passes keep theirs, so nothing is lost of the coverage); false: corners, as in the paper"},
+           "round the serpentine's corners and the transitions' corners with arcs of radius up to r, and the side passes' "
+           "corners with arcs that pass within r/20 of them (each checked exactly); false: corners, as in the paper"},
           {"direction", ParamType::kDouble, "0", "-360:360|best",
            "sweep direction in degrees (lanes perpendicular to it), or best: the workspace's main edge directions, 0 and 90 "
            "tried, the least length + r x turning kept"}};

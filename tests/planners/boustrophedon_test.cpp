@@ -104,13 +104,7 @@ TEST(Boustrophedon, TurnsLessThanFullStcAndSmoothStcInClutter) {
   for (std::uint64_t seed : {1u, 2u, 3u})
     for (const Rational& r : {Rational(1, 4), Rational(2, 5)}) {
       SCOPED_TRACE("seed " + std::to_string(seed) + " r " + r.get_str());
-      datasets::PolygonWorldSpec p;
-      p.width = p.height = 16;
-      p.count = 20;
-      p.minSize = 0.5;
-      p.maxSize = 2;
-      p.shape = datasets::ObstacleShape::kMixed;
-      p.seed = seed;
+      const datasets::PolygonWorldSpec p{16, 16, 20, 0.5, 2, datasets::ObstacleShape::kMixed, seed};   // 16 × 16, 20 of 0.5-2
       const auto ctx = testing_helpers::contextFor(datasets::generatePolygonWorld(p), r);
       std::map<std::string, std::size_t> turns;
       for (const char* planner : {"boustrophedon", "full_stc", "smooth_stc"}) {
@@ -128,15 +122,9 @@ TEST(Boustrophedon, TurnsLessThanFullStcAndSmoothStcInClutter) {
 // of length 1e-16 whose heading is noise. No piece shorter than 1e-9·r is left between lines, the
 // pockets left out are small, and the coverage stays.
 TEST(Boustrophedon, OnScannedWallsNoSliversAndPocketsAreSmall) {
-  datasets::GridMapSpec g;
-  g.width = 160;
-  g.height = 100;
-  g.density = 0.12;
-  g.clustered = true;
-  g.resolution = Rational(1, 20);
   for (std::uint64_t seed : {1u, 2u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    g.seed = seed;
+    const datasets::GridMapSpec g{160, 100, 0.12, true, Rational(1, 20), seed};   // 8 m × 5 m, clustered
     const Workspace w = datasets::gridToWorkspace(datasets::generateGridMap(g), "scan");
     const Rational r(3, 20);
     const auto ctx = testing_helpers::contextFor(w, r);
