@@ -33,9 +33,7 @@
 #include <sstream>
 #include <thread>
 
-#ifndef COVERKIT_GIT_REVISION
-#define COVERKIT_GIT_REVISION "unknown"
-#endif
+#include "coverkit_git_revision.h"   // generated at every build (cmake/git_revision.cmake)
 #ifndef COVERKIT_VERSION
 #define COVERKIT_VERSION "unknown"
 #endif

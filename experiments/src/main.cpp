@@ -19,9 +19,7 @@
 #include <iostream>
 #include <string>
 
-#ifndef COVERKIT_GIT_REVISION
-#define COVERKIT_GIT_REVISION "unknown"
-#endif
+#include "coverkit_git_revision.h"   // generated at every build (cmake/git_revision.cmake)
 #ifndef COVERKIT_VERSION
 #define COVERKIT_VERSION "0.0.0"
 #endif

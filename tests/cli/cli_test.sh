@@ -424,5 +424,13 @@ expect_bad "plan: --metrics unknown" "--metrics" plan --map "$T/room.wkt" --radi
 expect_bad "plan: --threads not a number" "--threads" plan --map "$T/room.wkt" --radius 0.25 --planner stc --threads many --out "$T/out.json"
 expect_bad "cspace: --threads not a number" "--threads" cspace --map "$T/room.wkt" --radius 0.25 --threads many --out "$T/out.json"
 
+# --------------------------------------------------------------------------------------------- provenance
+# --version (and run.json) name the revision built (cmake/git_revision.cmake), not the one configured
+SRC="$(cd "$DATA/../.." && pwd)"
+if command -v git > /dev/null && [ -e "$SRC/.git" ]; then
+  rev="$(git -C "$SRC" rev-parse --short HEAD 2> /dev/null)"
+  "$CK" --version | grep -qF "($rev)" && ok || bad "--version does not name the revision $rev: $("$CK" --version)"
+fi
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
