@@ -1,5 +1,6 @@
 // The path processor registry and chain (see processor.h).
 #include <coverkit/optimise/fillet.h>
+#include <coverkit/optimise/smooth.h>
 #include <coverkit/optimise/processor.h>
 
 #include <coverkit/geometry/error.h>
@@ -13,6 +14,7 @@ ProcessorRegistry& ProcessorRegistry::instance() {
   static ProcessorRegistry r = [] {
     ProcessorRegistry reg;
     reg.add("fillet", [] { return std::make_unique<FilletProcessor>(); });
+    reg.add("smooth", [] { return std::make_unique<SmoothProcessor>(); });
     return reg;
   }();
   return r;

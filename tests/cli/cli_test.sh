@@ -382,6 +382,14 @@ expect_bad "plan --post: unknown processor" "--post: smoothen: unknown path proc
 expect_bad "plan --post: unknown parameter" "--post: fillet:radius: unknown parameter of path processor 'fillet'" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:radius=1" --out "$T/out.json"
 expect_bad "plan --post: parameter out of range" "--post: fillet:max_radius=-1: out of range" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius=-1" --out "$T/out.json"
 expect_bad "plan --post: parameter without a value" "--post: fillet:max_radius: expected KEY=VALUE" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "fillet:max_radius" --out "$T/out.json"
+expect_bad "plan --post: smooth's iterations out of range" "--post: smooth:iterations=0: out of range" plan --map "$T/room.wkt" --radius 0.25 --planner stc --post "smooth:iterations=0" --out "$T/out.json"
+"$CK" plan --map "$DATA/pillars.wkt" --radius 0.25 --planner smooth_stc --post smooth --out "$T/smooth.json" > "$T/smooth.out" 2>&1 &&
+  python3 - "$T/smooth.json" <<'PYEOF' && ok || bad "plan --post smooth: $(cat "$T/smooth.out")"
+import json, sys
+d = json.load(open(sys.argv[1])); s = d["statistics"]
+assert s["post_smooth_reverted"] == 0 and s["post_smooth_stretches"] > 0 and s["post_smooth_iterations"] > 0, s
+assert s["post_smooth_cost_after"] <= s["post_smooth_cost_before"], s
+PYEOF
 expect_bad "plan --v-max not positive" "--v-max" plan --map "$T/room.wkt" --radius 0.25 --planner stc --v-max 0 --out "$T/out.json"
 printf 'planners: ["stc+fillet:max_radius=0.5", "stc+nope"]\n' > "$T/cvs-bad7.yaml"
 expect_bad "config path processor" "cvs-bad7.yaml: planners: 'stc+nope': --post: nope: unknown path processor" experiment coverage-vs-size --config "$T/cvs-bad7.yaml" --out "$T/out.json"
