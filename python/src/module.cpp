@@ -14,6 +14,7 @@
 #include "render.h"
 #include "runner.h"
 
+#include <coverkit/optimise/processor.h>
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/cspace.h>
@@ -429,14 +430,22 @@ PYBIND11_MODULE(_coverkit, m) {
         if (!cellSize.is_none()) problem.cellSize = exactNumber(cellSize, "cell_size");
         problem.robots.push_back(robot);
         const auto kv = paramMap(params);
-        if (!post.is_none() && py::len(post) > 0)
-          throw InputError("post", py::str(post).cast<std::string>(), "unknown path processor (known: none in this version)");
+        // path processors as `coverkit plan --post` takes them: "NAME" or "NAME:k=v;...", checked before any work
+        std::vector<optimise::PostStep> steps;
+        if (!post.is_none()) {
+          if (py::isinstance<py::str>(post)) throw py::type_error("plan: post must be a list of strings, e.g. [\"fillet\"]");
+          for (const py::handle& step : post) {
+            if (!py::isinstance<py::str>(step)) throw py::type_error("plan: each post step must be a string \"NAME[:KEY=VALUE;...]\"");
+            steps.push_back(optimise::parsePostStep(step.cast<std::string>()));
+          }
+          optimise::checkPostSteps(steps);
+        }
         const double limit = timeLimitOf(timeLimit);
         PyPlan out;
         {
           py::gil_scoped_release release;
           auto ctx = std::make_shared<planners::PlanningContext>(planners::makeContext(std::move(problem)));
-          const experiments::RunResult r = experiments::runOnce(*ctx, planner, kv, limit);
+          const experiments::RunResult r = experiments::runOnce(*ctx, planner, kv, limit, {}, experiments::defaultMetricOptions(), steps);
           out.doc = experiments::pathDocument(*ctx, r);
           out.doc.workspace = nullptr;
           out.message = r.plan.message;

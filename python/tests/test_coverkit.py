@@ -84,6 +84,18 @@ def test_parameters_start_and_exact_numbers_as_on_the_command_line(tmp_path):
     assert a.statistics["direction_degrees"] == pytest.approx(30, abs=1e-3)
 
 
+def test_path_processors_as_on_the_command_line(tmp_path):
+    out = tmp_path / "cli.json"
+    cli("plan", "--map", data("pillars.wkt"), "--radius", "0.25", "--planner", "stc", "--post", "fillet",
+        "--post", "smooth:max_move=0.1", "--out", str(out), "--metrics", "full")
+    w = coverkit.load_map(data("pillars.wkt"))
+    plan = coverkit.plan(w, "stc", radius=0.25, post=["fillet", "smooth:max_move=0.1"])
+    assert plan.to_json() == out.read_text()
+    assert plan.valid is True
+    assert plan.statistics["post_fillet_rounded"] > 0 and plan.statistics["post_smooth_reverted"] == 0
+    assert plan.metrics["turns"] < coverkit.plan(w, "stc", radius=0.25).metrics["turns"]
+
+
 # --- maps ---------------------------------------------------------------------------------------
 
 def test_a_numpy_grid_is_the_map_read_from_its_file():
@@ -241,7 +253,9 @@ def test_input_error_is_a_value_error_with_the_command_lines_message(tmp_path):
     (lambda w: coverkit.plan(w, "stc", 0.25, start="1,2"), TypeError, "start"),
     (lambda w: coverkit.plan(w, "stc", 0.25, params={"nope": 1}), coverkit.InputError, "nope"),
     (lambda w: coverkit.plan(w, "boustrophedon", 0.25, params={"direction": "north"}), coverkit.InputError, "direction"),
-    (lambda w: coverkit.plan(w, "stc", 0.25, post=["fillet"]), coverkit.InputError, "processor"),
+    (lambda w: coverkit.plan(w, "stc", 0.25, post=["smoothen"]), coverkit.InputError, "processor"),
+    (lambda w: coverkit.plan(w, "stc", 0.25, post=["fillet:radius=1"]), coverkit.InputError, "radius"),
+    (lambda w: coverkit.plan(w, "stc", 0.25, post="fillet"), TypeError, "list"),
     (lambda w: coverkit.plan(w, "stc", 0.25, time_limit=-1), coverkit.InputError, "time_limit"),
     (lambda w: coverkit.plan(None, "stc", 0.25), TypeError, "workspace"),
     (lambda w: coverkit.Workspace.from_grid(np.ones((4, 4), dtype=np.uint8)), TypeError, "bool"),
