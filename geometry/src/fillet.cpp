@@ -1,6 +1,7 @@
 // Fillets between two pieces of a path (see fillet.h).
 #include <coverkit/geometry/fillet.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace coverkit {
@@ -23,6 +24,25 @@ PathSegment reversedPiece(const PathSegment& s) {
   return s.kind == PathSegment::Kind::kLine ? PathSegment::line(s.to, s.from) : PathSegment::arc(s.to, s.from, s.center, !s.ccw);
 }
 
+bool lineCircleCrossings(PointD p, PointD d, PointD c, double R, double& s0, double& s1) {
+  const PointD w{p.x - c.x, p.y - c.y};
+  const double bq = w.x * d.x + w.y * d.y, disc = bq * bq - (w.x * w.x + w.y * w.y - R * R);
+  if (!(disc >= 0)) return false;
+  s0 = -bq - std::sqrt(disc);
+  s1 = -bq + std::sqrt(disc);
+  return true;
+}
+
+bool circleCrossings(PointD c1, double r1, PointD c2, double r2, PointD& left, PointD& right) {
+  const double d = dist(c1, c2);
+  if (!(d > 0) || d > r1 + r2 || d < std::abs(r1 - r2)) return false;
+  const double l = (r1 * r1 - r2 * r2 + d * d) / (2 * d), h = std::sqrt(std::max(0.0, r1 * r1 - l * l));
+  const PointD e{(c2.x - c1.x) / d, (c2.y - c1.y) / d}, q{c1.x + l * e.x, c1.y + l * e.y};
+  left = {q.x - h * e.y, q.y + h * e.x};
+  right = {q.x + h * e.y, q.y - h * e.x};
+  return true;
+}
+
 namespace {
 
 /// Two arcs: the fillet's centre is at R ∓ rho from each arc's centre (− where the arc turns the
@@ -34,11 +54,8 @@ bool filletArcs(const PathSegment& a, const PathSegment& b, double rho, PathSegm
   const PointD oa = a.center, ob = b.center, p = a.to;
   const double Ra = dist(a.from, oa), Rb = dist(b.from, ob);
   const double ra = a.ccw == left ? Ra - rho : Ra + rho, rb = b.ccw == left ? Rb - rho : Rb + rho;
-  const double d = dist(oa, ob);
-  if (ra <= 0 || rb <= 0 || !(d > 0) || d > ra + rb || d < std::abs(ra - rb)) return false;
-  const double l = (ra * ra - rb * rb + d * d) / (2 * d), h = std::sqrt(std::max(0.0, ra * ra - l * l));
-  const PointD e{(ob.x - oa.x) / d, (ob.y - oa.y) / d}, q{oa.x + l * e.x, oa.y + l * e.y};
-  const PointD c1{q.x - h * e.y, q.y + h * e.x}, c2{q.x + h * e.y, q.y - h * e.x};
+  PointD c1, c2;
+  if (ra <= 0 || rb <= 0 || !circleCrossings(oa, ra, ob, rb, c1, c2)) return false;
   const PointD c = dist(c1, p) <= dist(c2, p) ? c1 : c2;
   const PointD t1{oa.x + (c.x - oa.x) * Ra / ra, oa.y + (c.y - oa.y) * Ra / ra};
   const PointD t2{ob.x + (c.x - ob.x) * Rb / rb, ob.y + (c.y - ob.y) * Rb / rb};
@@ -89,11 +106,9 @@ bool filletCorner(const PathSegment& a, const PathSegment& b, double rho, PathSe
     const double R = dist(b.from, o);
     const double rf = b.ccw == left ? R - rho : R + rho;
     if (rf <= 0) return false;
-    const PointD w{p.x + n.x * rho - o.x, p.y + n.y * rho - o.y};
-    const double bq = w.x * d.x + w.y * d.y, disc = bq * bq - (w.x * w.x + w.y * w.y - rf * rf);
-    if (disc < 0) return false;
-    s = -bq + std::sqrt(disc);   // the root nearer the joint from behind, when it is behind
-    if (s > 0) s = -bq - std::sqrt(disc);
+    double s0, s1;
+    if (!lineCircleCrossings({p.x + n.x * rho, p.y + n.y * rho}, d, o, rf, s0, s1)) return false;
+    s = s1 > 0 ? s0 : s1;   // the root nearer the joint from behind, when it is behind
     if (s > 0) return false;
     c = {p.x + d.x * s + n.x * rho, p.y + d.y * s + n.y * rho};
     t2 = {o.x + (c.x - o.x) * R / rf, o.y + (c.y - o.y) * R / rf};

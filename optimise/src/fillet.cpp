@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace coverkit::optimise {
 
@@ -28,9 +27,9 @@ namespace {
 
 using detail::dist;
 using detail::distToPiece;
+using detail::exactOf;
 using detail::Sweeps;
 
-Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
 bool clearPiece(ClearanceChecker& check, const PathSegment& s) {
   if (s.kind == PathSegment::Kind::kLine) return check.clear(exactOf(s.from), exactOf(s.to));

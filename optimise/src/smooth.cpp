@@ -13,7 +13,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace coverkit::optimise {
 
@@ -35,10 +34,10 @@ std::vector<planners::ParamSpec> SmoothProcessor::params() const {
 namespace {
 
 using detail::dist;
+using detail::exactOf;
 using detail::Sweeps;
 using Vec = std::array<double, 2>;
 
-Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
 struct Edge {
   double ax, ay, bx, by;
@@ -47,7 +46,7 @@ struct Edge {
 /// The workspace's edges (outer rings and holes) in a grid of cell size `cell`.
 class Edges {
 public:
-  Edges(const Workspace& w, double cell) : cell_(cell) {
+  Edges(const Workspace& w, double cell) : grid_(cell) {
     for (const Ring* ring : w.rings())
       for (std::size_t i = 0; i < ring->size(); ++i) {
         const Point &a = (*ring)[i], &b = (*ring)[(i + 1) % ring->size()];
@@ -56,45 +55,29 @@ public:
     stamp_.assign(edges_.size(), 0);
     for (std::size_t k = 0; k < edges_.size(); ++k) {
       const Edge& e = edges_[k];
-      const long i0 = key(std::min(e.ax, e.bx)), i1 = key(std::max(e.ax, e.bx)), j0 = key(std::min(e.ay, e.by)), j1 = key(std::max(e.ay, e.by));
-      if (static_cast<double>(i1 - i0 + 1) * static_cast<double>(j1 - j0 + 1) > 64 * 64) {
-        long_.push_back(k);
-        continue;
-      }
-      for (long i = i0; i <= i1; ++i)
-        for (long j = j0; j <= j1; ++j) grid_[cellKey(i, j)].push_back(k);
+      grid_.add(k, {std::min(e.ax, e.bx), std::min(e.ay, e.by), std::max(e.ax, e.bx), std::max(e.ay, e.by)});
     }
   }
-  /// The edges whose cells meet the box of p ± reach (each once).
+  /// The edges whose cells meet the box of p ± reach (each once, in index order: the same
+  /// residuals in the same order on every run).
   std::vector<std::size_t> near(PointD p, double reach) {
     ++now_;
     std::vector<std::size_t> out;
-    auto take = [&](std::size_t k) {
-      if (stamp_[k] == now_) return;
-      stamp_[k] = now_;
-      out.push_back(k);
-    };
-    for (std::size_t k : long_) take(k);
-    for (long i = key(p.x - reach); i <= key(p.x + reach); ++i)
-      for (long j = key(p.y - reach); j <= key(p.y + reach); ++j) {
-        const auto it = grid_.find(cellKey(i, j));
-        if (it != grid_.end())
-          for (std::size_t k : it->second) take(k);
+    grid_.any(p, reach, [&](std::size_t k) {
+      if (stamp_[k] != now_) {
+        stamp_[k] = now_;
+        out.push_back(k);
       }
-    std::sort(out.begin(), out.end());   // the same residual order on every run
+      return false;
+    });
+    std::sort(out.begin(), out.end());
     return out;
   }
   const Edge& operator[](std::size_t k) const { return edges_[k]; }
 
 private:
-  long key(double v) const { return static_cast<long>(std::clamp(std::floor(v / cell_), -1099511627776.0, 1099511627776.0)); }
-  static unsigned long long cellKey(long i, long j) {
-    return (static_cast<unsigned long long>(i) * 0x9E3779B97F4A7C15ULL) ^ static_cast<unsigned long long>(j);
-  }
-  double cell_;
   std::vector<Edge> edges_;
-  std::unordered_map<unsigned long long, std::vector<std::size_t>> grid_;
-  std::vector<std::size_t> long_;
+  detail::BoxGrid grid_;
   std::vector<unsigned> stamp_;
   unsigned now_ = 0;
 };
@@ -153,17 +136,20 @@ struct VertexBarrier {
   bool operator()(const T* a, T* res) const { return bar(a, static_cast<const T*>(nullptr), res); }
 };
 
-double turningOf(const std::vector<PathSegment>& segs, std::size_t from, std::size_t to) {
-  double t = 0;
-  for (std::size_t i = from; i + 1 < to; ++i) t += std::abs(turnAt(segs[i], segs[i + 1]));
+/// The joints of segs[from, to): their total turning (radians) and how many turn by more than
+/// 150° (metrics.h's reversals).
+struct Turning {
+  double total = 0;
+  std::size_t reversals = 0;
+};
+Turning turningOf(const std::vector<PathSegment>& segs, std::size_t from, std::size_t to) {
+  Turning t;
+  for (std::size_t i = from; i + 1 < to; ++i) {
+    const double a = std::abs(turnAt(segs[i], segs[i + 1]));
+    t.total += a;
+    t.reversals += a > 150 * M_PI / 180;
+  }
   return t;
-}
-
-/// Joints turning by more than 150° (metrics.h's reversals).
-std::size_t reversalsOf(const std::vector<PathSegment>& segs, std::size_t from, std::size_t to) {
-  std::size_t n = 0;
-  for (std::size_t i = from; i + 1 < to; ++i) n += std::abs(turnAt(segs[i], segs[i + 1])) > 150 * M_PI / 180;
-  return n;
 }
 
 }  // namespace
@@ -208,8 +194,7 @@ Plan SmoothProcessor::process(const Problem& problem, const Plan& plan, const pl
       ++stretches;
       vertices += movable;
       const std::vector<PathSegment> old(segs.begin() + static_cast<std::ptrdiff_t>(a), segs.begin() + static_cast<std::ptrdiff_t>(b));
-      const double turnBefore = turningOf(segs, a > 0 ? a - 1 : a, std::min(segs.size(), b + 1));
-      const std::size_t reversalsBefore = reversalsOf(segs, a > 0 ? a - 1 : a, std::min(segs.size(), b + 1));
+      const Turning before = turningOf(segs, a > 0 ? a - 1 : a, std::min(segs.size(), b + 1));
       double margin = params.number("margin") * r, maxMove = params.number("max_move") * r;
       bool kept = false;
       int why = 0;   // 1 clearance, 2 coverage, 3 turning
@@ -282,8 +267,8 @@ Plan SmoothProcessor::process(const Problem& problem, const Plan& plan, const pl
         trial.insert(trial.end(), now.begin(), now.end());
         const std::size_t bNew = trial.size();
         trial.insert(trial.end(), segs.begin() + static_cast<std::ptrdiff_t>(b), segs.end());
-        if (turningOf(trial, a > 0 ? a - 1 : a, std::min(trial.size(), bNew + 1)) > turnBefore + 1e-9 ||
-            reversalsOf(trial, a > 0 ? a - 1 : a, std::min(trial.size(), bNew + 1)) > reversalsBefore) {
+        const Turning after = turningOf(trial, a > 0 ? a - 1 : a, std::min(trial.size(), bNew + 1));
+        if (after.total > before.total + 1e-9 || after.reversals > before.reversals) {
           why = 3;
           break;   // no smaller move makes it turn less: left as it was
         }

@@ -1,6 +1,7 @@
 #pragma once
-// What a path sweeps, in doubles, for the path processors' coverage guards (fillet, smooth):
-// coverage is measured, not decided, there; clearance is decided exactly elsewhere.
+// What the path processors (fillet, smooth) share: what a path sweeps, in doubles, for their
+// coverage guards (coverage is measured, not decided, there; clearance is decided exactly), a
+// grid of boxes to find pieces and edges near a point, and the guard's parameters.
 #include <coverkit/geometry/cell_grid.h>
 #include <coverkit/geometry/path.h>
 #include <coverkit/planners/planner.h>
@@ -13,6 +14,8 @@
 namespace coverkit::optimise::detail {
 
 inline double dist(PointD a, PointD b) { return std::hypot(a.x - b.x, a.y - b.y); }
+/// A double point as the exact point it is (for the exact clearance tests).
+inline Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
 /// Distance from q to a piece (doubles: coverage is measured, not decided, here).
 inline double distToPiece(PointD q, const PathSegment& s) {
@@ -30,12 +33,52 @@ inline double distToPiece(PointD q, const PathSegment& s) {
   return std::min(dist(q, s.from), dist(q, s.to));
 }
 
+/// Items with boxes in a grid of square cells (a hash map of the cells that hold any); an item over
+/// more than 64 × 64 cells is kept apart and offered to every query (few: long lanes, walls).
+class BoxGrid {
+public:
+  explicit BoxGrid(double cell) : cell_(cell) {}
+  void add(std::size_t item, const BoxD& b) {
+    if (static_cast<double>(key(b.xmax) - key(b.xmin) + 1) * static_cast<double>(key(b.ymax) - key(b.ymin) + 1) > 64 * 64) {
+      large_.push_back(item);
+      return;
+    }
+    for (long i = key(b.xmin); i <= key(b.xmax); ++i)
+      for (long j = key(b.ymin); j <= key(b.ymax); ++j) cells_[cellKey(i, j)].push_back(item);
+  }
+  /// f(item) for the large items, then for those of the cells that meet the box p ± reach (an item
+  /// may come more than once), until f returns true; whether it did.
+  template <class F>
+  bool any(PointD p, double reach, F&& f) const {
+    for (std::size_t k : large_)
+      if (f(k)) return true;
+    for (long i = key(p.x - reach); i <= key(p.x + reach); ++i)
+      for (long j = key(p.y - reach); j <= key(p.y + reach); ++j) {
+        const auto it = cells_.find(cellKey(i, j));
+        if (it == cells_.end()) continue;
+        for (std::size_t k : it->second)
+          if (f(k)) return true;
+      }
+    return false;
+  }
+
+private:
+  /// The cell of a coordinate, clamped to ±2^40 cells (a cell of r and coordinates up to 10^15).
+  long key(double v) const { return static_cast<long>(std::clamp(std::floor(v / cell_), -1099511627776.0, 1099511627776.0)); }
+  static unsigned long long cellKey(long i, long j) {
+    return (static_cast<unsigned long long>(i) * 0x9E3779B97F4A7C15ULL) ^ static_cast<unsigned long long>(j);
+  }
+  double cell_;
+  std::unordered_map<unsigned long long, std::vector<std::size_t>> cells_;
+  std::vector<std::size_t> large_;
+};
+
 /// What the rest of a path sweeps, for the coverage guard: the pieces as they are now (slot k holds
 /// piece k, or what replaced it: its shortened part and the fillet after it), found through a grid
 /// of cell size r over each slot's box (piece k and k + 1 together: a fillet lies in that corner).
 class Sweeps {
 public:
-  Sweeps(const std::vector<PathSegment>& segs, double r) : slots_(segs.size()), cell_(r) {
+  Sweeps(const std::vector<PathSegment>& segs, double r) : slots_(segs.size()), grid_(r) {
     for (std::size_t k = 0; k < segs.size(); ++k) {
       slots_[k] = {segs[k]};
       BoxD b = boxOf(segs[k]);
@@ -43,34 +86,18 @@ public:
         const BoxD c = boxOf(segs[k + 1]);
         b = {std::min(b.xmin, c.xmin), std::min(b.ymin, c.ymin), std::max(b.xmax, c.xmax), std::max(b.ymax, c.ymax)};
       }
-      // a slot over more than 64 × 64 cells is checked at every query instead (few: long lanes)
-      if (static_cast<double>(key(b.xmax) - key(b.xmin) + 1) * static_cast<double>(key(b.ymax) - key(b.ymin) + 1) > 64 * 64) {
-        long_.push_back(k);
-        continue;
-      }
-      for (long i = key(b.xmin); i <= key(b.xmax); ++i)
-        for (long j = key(b.ymin); j <= key(b.ymax); ++j) grid_[cellKey(i, j)].push_back(k);
+      grid_.add(k, b);
     }
   }
   void replace(std::size_t k, std::vector<PathSegment> now) { slots_[k] = std::move(now); }
   /// Whether some piece of a slot other than `skipA`, `skipB` passes within r of q.
   bool sweeps(PointD q, double r, std::size_t skipA, std::size_t skipB) const {
-    auto near = [&](std::size_t k) {
+    return grid_.any(q, r, [&](std::size_t k) {
       if (k == skipA || k == skipB) return false;
       for (const PathSegment& s : slots_[k])
         if (distToPiece(q, s) <= r) return true;
       return false;
-    };
-    for (std::size_t k : long_)
-      if (near(k)) return true;
-    for (long i = key(q.x - r); i <= key(q.x + r); ++i)
-      for (long j = key(q.y - r); j <= key(q.y + r); ++j) {
-        const auto it = grid_.find(cellKey(i, j));
-        if (it == grid_.end()) continue;
-        for (std::size_t k : it->second)
-          if (near(k)) return true;
-      }
-    return false;
+    });
   }
 
 private:
@@ -79,15 +106,8 @@ private:
     const double R = dist(s.from, s.center);
     return {s.center.x - R, s.center.y - R, s.center.x + R, s.center.y + R};
   }
-  /// The cell of a coordinate, clamped to ±2^40 cells (a cell of r and coordinates up to 10^15).
-  long key(double v) const { return static_cast<long>(std::clamp(std::floor(v / cell_), -1099511627776.0, 1099511627776.0)); }
-  static unsigned long long cellKey(long i, long j) {
-    return (static_cast<unsigned long long>(i) * 0x9E3779B97F4A7C15ULL) ^ static_cast<unsigned long long>(j);
-  }
   std::vector<std::vector<PathSegment>> slots_;
-  double cell_;
-  std::unordered_map<unsigned long long, std::vector<std::size_t>> grid_;
-  std::vector<std::size_t> long_;
+  BoxGrid grid_;
 };
 
 /// The coverage guard's parameters, shared by the processors that have one.

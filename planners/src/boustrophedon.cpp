@@ -582,13 +582,9 @@ private:
   static bool crossing(const Curve& a, const Curve& b, PointD m, PointD& out) {
     std::vector<PointD> xs;
     auto lineCircle = [&](const Curve& l, const Curve& c) {
-      const PointD w{l.p.x - c.c.x, l.p.y - c.c.y};
-      const double bq = l.d.x * w.x + l.d.y * w.y, cq = w.x * w.x + w.y * w.y - c.R * c.R, disc = bq * bq - cq;
-      if (disc < 0) return;
-      for (double sg : {-1.0, 1.0}) {
-        const double s = -bq + sg * std::sqrt(disc);
-        xs.push_back({l.p.x + s * l.d.x, l.p.y + s * l.d.y});
-      }
+      double s0, s1;
+      if (!lineCircleCrossings(l.p, l.d, c.c, c.R, s0, s1)) return;
+      for (double s : {s0, s1}) xs.push_back({l.p.x + s * l.d.x, l.p.y + s * l.d.y});
     };
     if (!a.arc && !b.arc) {
       const double cross = a.d.x * b.d.y - a.d.y * b.d.x;
@@ -601,12 +597,9 @@ private:
     } else if (!b.arc) {
       lineCircle(b, a);
     } else {
-      const double d = dist(a.c, b.c);
-      if (d == 0 || d > a.R + b.R || d < std::abs(a.R - b.R)) return false;
-      const double l = (a.R * a.R - b.R * b.R + d * d) / (2 * d), h = std::sqrt(std::max(0.0, a.R * a.R - l * l));
-      const PointD e{(b.c.x - a.c.x) / d, (b.c.y - a.c.y) / d}, q{a.c.x + l * e.x, a.c.y + l * e.y};
-      xs.push_back({q.x - h * e.y, q.y + h * e.x});
-      xs.push_back({q.x + h * e.y, q.y - h * e.x});
+      PointD left, right;
+      if (!circleCrossings(a.c, a.R, b.c, b.R, left, right)) return false;
+      xs = {left, right};
     }
     if (xs.empty()) return false;
     out = xs[0];
@@ -840,6 +833,13 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   double pocketArea = 0;
   bool timedOut = false;
   std::map<std::string, double> phaseTurns;
+  // the end of a part of a sweep that began at segs[from]: its corners and the one with what came
+  // before rounded within r/20 (roundSide), slivers dropped, its turns counted
+  auto closePart = [&](const char* name, std::size_t from) {
+    if (rounded) walk.roundSide(segs, from > 0 ? from - 1 : 0);
+    walk.dropSlivers(segs, from);
+    phaseTurns[name] += turnsIn(segs, from, segs.size());
+  };
   for (std::size_t at = 0; at < order.size(); ++at) {
     const int cell = order[at];
     // a pocket: a region within a box of r/4 × r/4 (a notch of a ragged boundary, a wedge where
@@ -866,13 +866,12 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     // the first lane), to the next region's reference point
     bool fromRight = false, bottomFirst = true;
     double best = std::numeric_limits<double>::infinity();
-    const std::size_t m0 = lanes.size();
-    const bool endsOnFirstSide = m0 % 2 == 0;
+    const std::size_t m = lanes.size();
     for (bool fr : {false, true})
       for (bool bf : {true, false}) {
         const auto& l = fr ? lanes.back() : lanes.front();
-        const auto& e = m0 == 2 ? l : (fr ? lanes.front() : lanes.back());
-        const bool exitBottom = m0 == 2 ? bf : (endsOnFirstSide ? bf : !bf);
+        const auto& e = m == 2 ? l : (fr ? lanes.front() : lanes.back());
+        const bool exitBottom = m % 2 == 0 ? bf : !bf;   // an even count ends on the first side
         double dd = dist(cur(), bf ? l.first : l.second);
         if (at + 1 < order.size()) dd += dist(exitBottom ? e.first : e.second, walk.reference(order[at + 1]));
         if (dd < best) {
@@ -918,18 +917,13 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     walk.shortcut(route);
     if (rounded) walk.roundJoints(route, 0, {});
     segs.insert(segs.end(), route.begin(), route.end());
-    if (rounded) walk.roundSide(segs, mark0 > 0 ? mark0 - 1 : 0);
-    walk.dropSlivers(segs, mark0);
-    phaseTurns["turns_transitions"] += turnsIn(segs, mark0, segs.size());
+    closePart("turns_transitions", mark0);
     std::size_t mark = segs.size();
     // the sweep (boustrophedon.h): along the first side to the far end, the lanes back in a
     // serpentine (an odd number of lanes ends on the other side), along the other side again
     bool ok = true;
-    const std::size_t m = lanes.size();
     for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, bottomFirst), !bottomFirst, segs);
-    if (rounded) walk.roundSide(segs, mark > 0 ? mark - 1 : 0);
-    walk.dropSlivers(segs, mark);
-    phaseTurns["turns_first_side"] += turnsIn(segs, mark, segs.size());
+    closePart("turns_first_side", mark);
     mark = segs.size();
     bool atBottom = bottomFirst;
     std::vector<bool> isLane;   // per piece of segs[mark, end): a lane
@@ -946,15 +940,11 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     }
     // the serpentine's corners rounded: the side passes sweep what they cut (roundJoints)
     if (ok && rounded) walk.roundJoints(segs, mark, isLane, mark);
-    if (rounded) walk.roundSide(segs, mark > 0 ? mark - 1 : 0);
-    walk.dropSlivers(segs, mark);
-    phaseTurns["turns_lanes"] += turnsIn(segs, mark, segs.size());
+    closePart("turns_lanes", mark);
     mark = segs.size();
     if (m != 2)   // two lanes: the serpentine's turn has followed the other side already
       for (std::size_t i = 0; ok && i + 1 < m; ++i) ok = walk.hug(cell, cur(), end(i + 1, atBottom), !atBottom, segs);
-    if (rounded) walk.roundSide(segs, mark > 0 ? mark - 1 : 0);
-    walk.dropSlivers(segs, mark);
-    phaseTurns["turns_last_side"] += turnsIn(segs, mark, segs.size());
+    closePart("turns_last_side", mark);
     if (!ok) ++broken;
     if (!ok) skipped += regions.cells(cell).size();   // what was swept before the break stays; its cells count as not done
     here = cell;

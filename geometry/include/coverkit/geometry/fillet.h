@@ -17,6 +17,15 @@ double turnAt(const PathSegment& a, const PathSegment& b);
 /// A piece travelled backwards.
 PathSegment reversedPiece(const PathSegment& s);
 
+/// Where the line p + s·d (d a unit vector) meets the circle about c of radius R: false when it
+/// misses it, else its two parameters, s0 ≤ s1.
+bool lineCircleCrossings(PointD p, PointD d, PointD c, double R, double& s0, double& s1);
+
+/// Where the circles about c1 (radius r1) and c2 (radius r2) cross: false when they do not (or
+/// share their centre), else the two points (equal where they touch), the first on the left of
+/// the way from c1 to c2.
+bool circleCrossings(PointD c1, double r1, PointD c2, double r2, PointD& left, PointD& right);
+
 /// The arc of radius rho tangent to a (which ends at the joint) and to b (which begins there), on
 /// the inner side of the turn: a line and a line, a line and an arc, an arc and a line, or two
 /// arcs. a2 is a up to the first tangent point, f the arc, b2 b from the second. False when no
