@@ -18,9 +18,7 @@ std::string FilletProcessor::description() const {
 }
 
 std::vector<planners::ParamSpec> FilletProcessor::params() const {
-  std::vector<planners::ParamSpec> out{{"max_radius", planners::ParamType::kDouble, "1", "0.001:100", "the largest fillet radius, in robot radii"}};
-  for (const planners::ParamSpec& p : detail::coverageGuardParams()) out.push_back(p);
-  return out;
+  return detail::withCoverageGuard({{"max_radius", planners::ParamType::kDouble, "1", "0.001:100", "the largest fillet radius, in robot radii"}});
 }
 
 namespace {

@@ -22,13 +22,11 @@ std::string SmoothProcessor::description() const {
 }
 
 std::vector<planners::ParamSpec> SmoothProcessor::params() const {
-  std::vector<planners::ParamSpec> out{
+  return detail::withCoverageGuard({
       {"max_move", planners::ParamType::kDouble, "0.25", "0:10", "the farthest a vertex moves, in robot radii"},
       {"deviation", planners::ParamType::kDouble, "0.1", "0:1000", "the weight of staying at the plan's vertices"},
       {"margin", planners::ParamType::kDouble, "0.02", "0:1", "the barrier's margin beyond r, in robot radii"},
-      {"iterations", planners::ParamType::kInt, "50", "1:10000", "Ceres iterations per stretch, at most"}};
-  for (const planners::ParamSpec& p : detail::coverageGuardParams()) out.push_back(p);
-  return out;
+      {"iterations", planners::ParamType::kInt, "50", "1:10000", "Ceres iterations per stretch, at most"}});
 }
 
 namespace {

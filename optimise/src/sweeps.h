@@ -110,13 +110,15 @@ private:
   BoxGrid grid_;
 };
 
-/// The coverage guard's parameters, shared by the processors that have one.
-inline std::vector<planners::ParamSpec> coverageGuardParams() {
-  return {{"keep_coverage", planners::ParamType::kBool, "true", "true|false",
-           "change the path only as far as what the old pieces swept stays swept by the path (or is not free), up to a rim "
-           "of rim x r"},
-          {"rim", planners::ParamType::kDouble, "0.04", "0:0.5",
-           "keep_coverage: the width of the outer rim of the old sweep that may be left unswept, in robot radii"}};
+/// A processor's own parameters followed by the coverage guard's (keep_coverage, rim), which the
+/// processors that have a guard share.
+inline std::vector<planners::ParamSpec> withCoverageGuard(std::vector<planners::ParamSpec> own) {
+  own.push_back({"keep_coverage", planners::ParamType::kBool, "true", "true|false",
+                 "change the path only as far as what the old pieces swept stays swept by the path (or is not free), up to a rim "
+                 "of rim x r"});
+  own.push_back({"rim", planners::ParamType::kDouble, "0.04", "0:0.5",
+                 "keep_coverage: the width of the outer rim of the old sweep that may be left unswept, in robot radii"});
+  return own;
 }
 
 /// Free space for the guard: the workspace's sub-cells of r/2 (at least 1/4096 of the map's extent);
