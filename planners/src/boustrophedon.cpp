@@ -484,11 +484,11 @@ public:
   void dropSlivers(std::vector<PathSegment>& segs, std::size_t from) const {
     if (from > 0) --from;   // the joint with what came before
     const double eps = 1e-9 * r_;
-    std::vector<PathSegment> out(segs.begin(), segs.begin() + static_cast<std::ptrdiff_t>(from));
+    std::vector<PathSegment> out;   // what replaces segs[from, end): only the tail is rebuilt
     for (std::size_t i = from; i < segs.size(); ++i) {
       const PathSegment& g = segs[i];
       if (g.kind == PathSegment::Kind::kLine && g.length() < eps) {
-        if (out.size() > from && out.back().kind == PathSegment::Kind::kLine) {
+        if (!out.empty() && out.back().kind == PathSegment::Kind::kLine) {
           const PathSegment c = PathSegment::line(out.back().from, g.to);
           ++checks_;
           if (clear(c)) {
@@ -510,7 +510,8 @@ public:
       }
       out.push_back(g);
     }
-    segs.swap(out);
+    segs.resize(from);
+    segs.insert(segs.end(), out.begin(), out.end());
   }
 
   /// A piece clear in the frame's C-free (radius r + μ), exactly.
@@ -867,13 +868,15 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
     bool fromRight = false, bottomFirst = true;
     double best = std::numeric_limits<double>::infinity();
     const std::size_t m = lanes.size();
+    const bool last = at + 1 == order.size();
+    const PointD next = last ? PointD{} : walk.reference(order[at + 1]);
     for (bool fr : {false, true})
       for (bool bf : {true, false}) {
         const auto& l = fr ? lanes.back() : lanes.front();
         const auto& e = m == 2 ? l : (fr ? lanes.front() : lanes.back());
         const bool exitBottom = m % 2 == 0 ? bf : !bf;   // an even count ends on the first side
         double dd = dist(cur(), bf ? l.first : l.second);
-        if (at + 1 < order.size()) dd += dist(exitBottom ? e.first : e.second, walk.reference(order[at + 1]));
+        if (!last) dd += dist(exitBottom ? e.first : e.second, next);
         if (dd < best) {
           best = dd;
           fromRight = fr;
