@@ -150,9 +150,9 @@ void checkWorkspace(const Workspace& w) {
   // margin) skip the rings that cannot contain it.
   struct RingBox {
     double x0, y0, x1, y1;
-    bool may(const Point& p) const {
-      const double x = p.x.get_d(), y = p.y.get_d(), e = 1e-9 * (1 + std::abs(x) + std::abs(y));
-      return x >= x0 - e && x <= x1 + e && y >= y0 - e && y <= y1 + e;
+    bool may(const PointD& p) const {  // p rounded to doubles once by the caller (a division each)
+      const double e = 1e-9 * (1 + std::abs(p.x) + std::abs(p.y));
+      return p.x >= x0 - e && p.x <= x1 + e && p.y >= y0 - e && p.y <= y1 + e;
     }
   };
   auto boxOf = [](const Ring& r) {
@@ -172,15 +172,17 @@ void checkWorkspace(const Workspace& w) {
     for (std::size_t h = 0; h < reg.holes.size(); ++h) {
       // the midpoint of an edge is on no other ring (rings meet only at vertices)
       const Point m{Rational((reg.holes[h][0].x + reg.holes[h][1].x) / 2), Rational((reg.holes[h][0].y + reg.holes[h][1].y) / 2)};
-      if (!outerBox[ri].may(m) || !insideRing(reg.outer, m))
+      const PointD md{m.x.get_d(), m.y.get_d()};
+      if (!outerBox[ri].may(md) || !insideRing(reg.outer, m))
         throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
       for (std::size_t h2 = 0; h2 < reg.holes.size(); ++h2)
-        if (h2 != h && holeBox[h2].may(m) && insideRing(reg.holes[h2], m))
+        if (h2 != h && holeBox[h2].may(md) && insideRing(reg.holes[h2], m))
           throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole lies inside hole " + std::to_string(h2 + 1));
     }
     const Point m{Rational((reg.outer[0].x + reg.outer[1].x) / 2), Rational((reg.outer[0].y + reg.outer[1].y) / 2)};
+    const PointD md{m.x.get_d(), m.y.get_d()};
     for (std::size_t rj = 0; rj < w.regions.size(); ++rj) {
-      if (rj == ri || !outerBox[rj].may(m) || !insideRing(w.regions[rj].outer, m)) continue;
+      if (rj == ri || !outerBox[rj].may(md) || !insideRing(w.regions[rj].outer, m)) continue;
       bool inHole = false;
       for (const Ring& h : w.regions[rj].holes) inHole = inHole || insideRing(h, m);
       if (!inHole) throw InputError(w.name, where(ri, -1, 0), "polygon overlaps polygon " + std::to_string(rj + 1));

@@ -319,3 +319,89 @@ TEST(CSpace, AnOffsetThatDoesNotCloseIsReplaced) {
   EXPECT_TRUE(cs.contains({parseRational("11.3"), parseRational("2.5")}));        // 0.31 below it
   EXPECT_LT(cs.area(), 24.6 * 14.6 - 0.5);                                        // the eroded box minus the obstacle
 }
+
+namespace {
+
+double distanceToRing(const std::vector<PointD>& ring, PointD p) {
+  double d = 1e300;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const PointD a = ring[k], b = ring[(k + 1) % ring.size()];
+    const double dx = b.x - a.x, dy = b.y - a.y, t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    d = std::min(d, std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy));
+  }
+  return d;
+}
+
+}  // namespace
+
+// Convex obstacles are offset directly (cspace.cpp, convexOffset): tangent roofs over the edges, exact
+// arcs about the vertices. Seeded convex polygons of 3-40 vertices, sizes 0.05-20, radii 0.001-10,
+// eps 1e-9-1e-3 of the extent: the C-obstacle's boundary lies at distance >= r from the polygon
+// (outside the exact offset: C-free stays conservative) and within eps of r, and its area is the
+// exact offset's, A + P·r + π·r², up to eps × its perimeter.
+TEST(CSpace, ConvexOffsetsLieOutsideTheExactOneWithinEps) {
+  std::mt19937_64 rng(2026);
+  const double radii[] = {0.001, 0.05, 0.5, 3, 10}, epss[] = {1e-9, 1e-6, 1e-3};
+  for (int trial = 0; trial < 150; ++trial) {
+    const int n = 3 + static_cast<int>(rng() % 38);
+    const double size = std::exp(std::uniform_real_distribution<double>(std::log(0.05), std::log(20))(rng));
+    std::vector<double> angles(static_cast<std::size_t>(n));
+    for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    std::sort(angles.begin(), angles.end());
+    Ring ring;
+    std::vector<PointD> ringD;
+    for (double a : angles) {
+      const Point p{ratio(std::lround((50 + size * std::cos(a)) * 1e6), 1000000), ratio(std::lround((50 + size * std::sin(a)) * 1e6), 1000000)};
+      if (!ring.empty() && p == ring.back()) continue;
+      ring.push_back(p);
+    }
+    // the convex hull of the rounded points (rounding may dent the circle)
+    std::vector<PointD> pts;
+    for (const Point& p : ring) pts.push_back({p.x.get_d(), p.y.get_d()});
+    Ring hull;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point &a = ring[(i + ring.size() - 1) % ring.size()], &b = ring[i], &c = ring[(i + 1) % ring.size()];
+      if (sgn(Rational((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))) > 0) hull.push_back(b);
+    }
+    if (hull.size() < 3) continue;
+    bool convex = true;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const Point &a = hull[(i + hull.size() - 1) % hull.size()], &b = hull[i], &c = hull[(i + 1) % hull.size()];
+      convex = convex && sgn(Rational((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))) > 0;
+    }
+    if (!convex) continue;
+    for (const Point& p : hull) ringD.push_back({p.x.get_d(), p.y.get_d()});
+    const double r = radii[rng() % 5], relEps = epss[rng() % 3];
+    const CSpace cs(testing_helpers::boxWith({hull}, 100, 100), exactFromDouble(r), relEps);
+    const double eps = cs.epsilon();
+    SCOPED_TRACE("trial " + std::to_string(trial) + ": " + std::to_string(hull.size()) + " vertices, size " + std::to_string(size) +
+                 ", r " + std::to_string(r) + ", eps " + std::to_string(eps));
+    ASSERT_EQ(cs.componentCount(), 1u);
+    const std::vector<CurveRegion> comps = cs.components();
+    ASSERT_EQ(comps[0].holes.size(), 1u);
+    double A = 0, P = 0;
+    for (std::size_t k = 0; k < ringD.size(); ++k) {
+      const PointD a = ringD[k], b = ringD[(k + 1) % ringD.size()];
+      A += a.x * b.y - b.x * a.y;
+      P += std::hypot(b.x - a.x, b.y - a.y);
+    }
+    A /= 2;
+    double lowest = 1e300, highest = -1e300;
+    for (const PathSegment& s : comps[0].holes[0].pieces) {
+      Path piece;
+      piece.start = s.from;
+      piece.segments = {s};
+      for (const PointD& q : piece.polyline(1e-3 * r)) {
+        const double d = distanceToRing(ringD, q) - r;
+        lowest = std::min(lowest, d);
+        highest = std::max(highest, d);
+      }
+    }
+    const double tol = 1e-9 * (1 + size + r);  // the doubles of the pieces and of the distance
+    EXPECT_GE(lowest, -tol);
+    EXPECT_LE(highest, eps + tol);
+    const double exact = A + P * r + M_PI * r * r, offset = (100 - 2 * r) * (100 - 2 * r) - cs.area();
+    EXPECT_GE(offset, exact - 1e-10 * 1e4);
+    EXPECT_LE(offset, exact + (P + 2 * M_PI * r) * eps + 1e-10 * 1e4);
+  }
+}
