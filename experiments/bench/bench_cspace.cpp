@@ -79,6 +79,17 @@ static void BM_CSpaceWorld(benchmark::State& state) {
 }
 BENCHMARK(BM_CSpaceWorld)->Arg(1)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
+// The same with the obstacles' offsets on every core, as `coverkit cspace` and the planners' C-spaces
+// run by default (`--threads 0`); wall time, the C-space the same to the bit.
+static void BM_CSpaceWorldAllCores(benchmark::State& state) {
+  const Workspace w = obstacleWorld(static_cast<int>(state.range(0)));
+  double area = 0;
+  for (auto _ : state) area = CSpace(w, kRadius, 1e-6, 0).area();
+  state.counters["obstacles"] = static_cast<double>(w.regions[0].holes.size());
+  state.counters["area_err_rel"] = std::abs(area - referenceArea(w, kRadius)) / referenceArea(w, kRadius);
+}
+BENCHMARK(BM_CSpaceWorldAllCores)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 static void BM_CSpaceCells(benchmark::State& state) {
   // a world of 100 obstacles, the mega-cell grid made finer to reach M × M mega-cells
   const Workspace w = obstacleWorld(100);

@@ -8,12 +8,9 @@
 #include <CGAL/General_polygon_set_2.h>
 #include <CGAL/Gps_circle_segment_traits_2.h>
 #include <CGAL/Polygon_2.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/gmpxx.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/Polygon_triangulation_decomposition_2.h>
 #include <CGAL/approximated_offset_2.h>
-#include <CGAL/Minkowski_sum_2/Approx_offset_base_2.h>
 
 #include "circle_segment_area.h"
 #include "cspace_access.h"
@@ -24,7 +21,6 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
-#include <type_traits>
 
 namespace coverkit {
 
@@ -77,119 +73,9 @@ bool closedLoops(const CPolygonWithHoles& p) {
   return true;
 }
 
-/// CGAL's convolution cycle of a polygon by a disc: the first half of approximated_offset_2, which
-/// then unites the cycle's interior with an arrangement (protected in CGAL's offset base class).
-/// Computed on plain rationals (the lazy kernel's number DAGs made it 3× slower), then rebuilt on the
-/// kernel of the Boolean operations: every point of the cycle is rational.
-using QK = CGAL::Simple_cartesian<Rational>;
-class ConvolutionCycle : private CGAL::Approx_offset_base_2<QK, std::vector<QK::Point_2>> {
-  using Base = CGAL::Approx_offset_base_2<QK, std::vector<QK::Point_2>>;
-
-public:
-  struct Piece {
-    Rational x, y;            // where it starts
-    bool arc = false;
-    Rational cx, cy;          // arcs: the centre (counter-clockwise, radius r)
-  };
-  explicit ConvolutionCycle(double eps) : Base(eps) {}
-  std::vector<Piece> operator()(const std::vector<std::pair<Rational, Rational>>& ccw, const Rational& r) const {
-    Base::Polygon_2 p;
-    for (const auto& v : ccw) p.push_back(QK::Point_2(v.first, v.second));
-    std::vector<Base::Labeled_curve_2> cycle;
-    Base::_offset_polygon(p, CGAL::COUNTERCLOCKWISE, r, 1, std::back_inserter(cycle));
-    std::vector<Piece> out;
-    for (const auto& c : cycle) {
-      Piece q;
-      if (!c.source().x().is_rational() || !c.source().y().is_rational()) return {};
-      q.x = c.source().x().a0();
-      q.y = c.source().y().a0();
-      if (c.is_circular()) {
-        if (c.orientation() != CGAL::COUNTERCLOCKWISE) return {};
-        q.arc = true;
-        q.cx = c.supporting_circle().center().x();
-        q.cy = c.supporting_circle().center().y();
-      }
-      out.push_back(std::move(q));
-    }
-    return out;
-  }
-};
-
-/// The offset of a strictly convex polygon without the arrangement, or false (the caller then uses
-/// approximated_offset_2).
-/// Decision (issue 14): approximated_offset_2 computes the convolution cycle (exact arcs about the
-/// vertices between rational points of their circles, and over each edge whose offset line is
-/// irrational two tangents of those circles meeting above it: pieces outside the exact offset) and
-/// then unites the cycle's interior with an arrangement of its own, for every polygon: 40 % of the
-/// C-space of 1,000 convex obstacles. For a strictly convex polygon the cycle is already the boundary
-/// when every arc about a vertex turns counter-clockwise by less than a half turn (its two ends are
-/// rational approximations of the edges' normals, which could overlap at a tiny turn) and every pair
-/// of tangents turns left where they meet: then all its turns are positive and it turns once around,
-/// so it is simple. Both are checked exactly; the pieces are CGAL's, so the C-obstacle is the same
-/// point set as approximated_offset_2's (and every figure made with it stays). The pieces are rebuilt
-/// so that consecutive ones share their end point's representation: the Boolean operations then see
-/// one point, not two equal ones that only an exact comparison tells apart.
-bool convexOffset(const LinearPolygon& p, const K::FT& r, double eps, CPolygonWithHoles& out) {
-  const std::size_t n = p.size();
-  const Rational rq(CGAL::exact(r));
-  if (n < 3 || sgn(rq) <= 0) return false;
-  std::vector<std::pair<Rational, Rational>> v;
-  for (std::size_t i = 0; i < n; ++i) v.emplace_back(Rational(CGAL::exact(p[i].x())), Rational(CGAL::exact(p[i].y())));
-  auto orient = [](const Rational& ax, const Rational& ay, const Rational& bx, const Rational& by, const Rational& cx, const Rational& cy) {
-    return sgn(Rational((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)));
-  };
-  for (std::size_t i = 0; i < n; ++i) {  // strictly convex, counter-clockwise
-    const auto &a = v[(i + n - 1) % n], &b = v[i], &c = v[(i + 1) % n];
-    if (orient(a.first, a.second, b.first, b.second, c.first, c.second) <= 0) return false;
-  }
-  const std::vector<ConvolutionCycle::Piece> cycle = ConvolutionCycle(eps)(v, rq);
-  const std::size_t m = cycle.size();
-  if (m < 3) return false;
-  auto sameCentre = [](const ConvolutionCycle::Piece& a, const ConvolutionCycle::Piece& b) {
-    return a.arc && b.arc && a.cx == b.cx && a.cy == b.cy;
-  };
-  for (std::size_t k = 0; k < m; ++k) {
-    const auto &c = cycle[k], &d = cycle[(k + 1) % m], &e = cycle[(k + 2) % m];
-    if (c.arc) {
-      if (sameCentre(c, d)) continue;  // the same arc, split at an extreme point
-      std::size_t first = k;           // the whole arc about this centre: from its first piece to d
-      while (sameCentre(cycle[(first + m - 1) % m], c) && (first + m - 1) % m != k) first = (first + m - 1) % m;
-      if (orient(c.cx, c.cy, cycle[first].x, cycle[first].y, d.x, d.y) <= 0) return false;
-    } else if (!d.arc && orient(c.x, c.y, d.x, d.y, e.x, e.y) <= 0) {
-      return false;
-    }
-  }
-  std::vector<K::Point_2> kp;
-  std::vector<Traits::Point_2> tp;
-  for (const auto& c : cycle) {
-    kp.emplace_back(ft(c.x), ft(c.y));
-    tp.emplace_back(kp.back().x(), kp.back().y());
-  }
-  const K::FT r2 = ft(rq * rq);
-  CPolygon loop;
-  for (std::size_t k = 0; k < m; ++k) {
-    const std::size_t next = (k + 1) % m;
-    if (cycle[k].arc) {
-      const K::Circle_2 circle(K::Point_2(ft(cycle[k].cx), ft(cycle[k].cy)), r2, CGAL::COUNTERCLOCKWISE);
-      loop.push_back(Traits::X_monotone_curve_2(circle, tp[k], tp[next], CGAL::COUNTERCLOCKWISE));
-    } else {
-      loop.push_back(Traits::X_monotone_curve_2(K::Line_2(kp[k], kp[next]), tp[k], tp[next]));
-    }
-  }
-  out = CPolygonWithHoles(loop);
-  return true;
-}
-
 template <class Polygon>
 void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double eps, std::vector<CPolygonWithHoles>& out) {
   constexpr std::size_t kWhole = 2000;
-  if constexpr (std::is_same_v<Polygon, LinearPolygon>) {
-    CPolygonWithHoles direct;
-    if (convexOffset(p, r, eps, direct)) {
-      out.push_back(std::move(direct));
-      return;
-    }
-  }
   if (vertices <= kWhole) {
     CPolygonWithHoles whole = CGAL::approximated_offset_2(p, r, eps);
     if (closedLoops(whole)) {
@@ -322,7 +208,7 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, u
     PolygonSet blocked;
     // One range join: CGAL merges the polygons' arrangements by divide and conquer, sweeping k of
     // them at once; its default k = 5 sweeps the curves of the union up to log5(n) times. k = 64
-    // took the C-space of 1,000 convex obstacles from about 0.62 s to 0.52 s (docs/performance.md).
+    // made the C-space of 1,000 convex obstacles 15-20 % faster (docs/performance.md).
     constexpr unsigned kJoinFanIn = 64;
     blocked.join(cobs.begin(), cobs.end(), kJoinFanIn);
     // The outside's offset covers the frame beyond the region, so what the join leaves uncovered
@@ -345,6 +231,7 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, u
   std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return impl_->areas[i] > impl_->areas[j]; });
   std::vector<CPolygonWithHoles> parts;
   std::vector<double> areas;
+  parts.reserve(order.size());  // moved, not copied, also when growing (see cobs above)
   for (std::size_t i : order) {
     parts.push_back(std::move(impl_->parts[i]));
     areas.push_back(impl_->areas[i]);

@@ -334,8 +334,7 @@ double distanceToRing(const std::vector<PointD>& ring, PointD p) {
 
 }  // namespace
 
-// Convex obstacles are offset without an arrangement (cspace.cpp, convexOffset). Seeded convex
-// polygons of 3-40 vertices, sizes 0.05-20, radii 0.001-10, eps 1e-9-1e-3 of the extent: the
+// The C-obstacles of convex polygons (approximated_offset_2). Seeded convex polygons of 3-40 vertices, sizes 0.05-20, radii 0.001-10, eps 1e-9-1e-3 of the extent: the
 // C-obstacle's boundary lies at distance >= r from the polygon (outside the exact offset: C-free
 // stays conservative) and its area is at least the exact offset's, A + P·r + π·r². How far outside
 // it lies is not asserted: CGAL's pieces, which these are, leave eps behind (cspace.h, "the

@@ -3,8 +3,7 @@
 //
 // C-obstacle = obstacle ⊕ disc(r); the workspace boundary is eroded by r. C-free is the set of
 // centres at which the disc lies in W and meets no obstacle interior. It is built with CGAL's
-// `approximated_offset_2` (circle-segment traits, exact kernel), convex obstacles with the same kind
-// of pieces built directly (docs/architecture.md): every arc of the result is exact
+// `approximated_offset_2` (circle-segment traits, exact kernel): every arc of the result is exact
 // (rational centre, rational squared radius); where the exact offset would need an irrational line,
 // the construction replaces it by rational pieces that lie *outside* the exact offset, within eps.
 // So the C-obstacles used here contain the exact ones (an approximation errs outward, never inward)
@@ -15,9 +14,9 @@
 // ConvexOffsetsLieOutsideTheExactOne) up to 93 × eps (0.0093 at eps = 1e-4, r = 0.05, a 9-gon of
 // size 0.28) and 2.4 at eps = 0.1, r = 10. Still outward (safe), but C-free is smaller than eps says
 // and the closed convention's margin δ below assumes eps. Edges parallel to an axis (grid maps) are
-// exact. A fix measured in this session: tangents at angles below eps / (16·L) and
+// exact. A fix measured (docs/architecture.md): tangents at angles below eps / (16·L) and
 // sqrt(eps / (16·r)) keep every piece within eps / 10 (and made the C-space of 1,000 convex
-// obstacles about 1.3× faster), but they change every figure made on polygon worlds; they wait
+// obstacles about 1.5× faster), but they change every figure made on polygon worlds; they wait
 // for a session that regenerates those.
 // eps defaults to 1e-6 × the workspace's extent (docs/architecture.md has the measured choice).
 //
