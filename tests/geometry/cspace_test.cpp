@@ -322,6 +322,10 @@ TEST(CSpace, AnOffsetThatDoesNotCloseIsReplaced) {
 
 namespace {
 
+int turn(const Point& a, const Point& b, const Point& c) {
+  return sgn(Rational((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)));
+}
+
 double distanceToRing(const std::vector<PointD>& ring, PointD p) {
   double d = 1e300;
   for (std::size_t k = 0; k < ring.size(); ++k) {
@@ -334,8 +338,8 @@ double distanceToRing(const std::vector<PointD>& ring, PointD p) {
 
 }  // namespace
 
-// The C-obstacles of convex polygons (approximated_offset_2). Seeded convex polygons of 3-40 vertices, sizes 0.05-20, radii 0.001-10, eps 1e-9-1e-3 of the extent: the
-// C-obstacle's boundary lies at distance >= r from the polygon (outside the exact offset: C-free
+// The C-obstacles of convex polygons (approximated_offset_2). Seeded convex polygons of 3-40
+// vertices, sizes 0.05-20, radii 0.001-10, eps 1e-9-1e-3 of the extent: the C-obstacle's boundary lies at distance >= r from the polygon (outside the exact offset: C-free
 // stays conservative) and its area is at least the exact offset's, A + P·r + π·r². How far outside
 // it lies is not asserted: CGAL's pieces, which these are, leave eps behind (cspace.h, "the
 // approximation bound").
@@ -349,27 +353,22 @@ TEST(CSpace, ConvexOffsetsLieOutsideTheExactOne) {
     for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
     std::sort(angles.begin(), angles.end());
     Ring ring;
-    std::vector<PointD> ringD;
     for (double a : angles) {
       const Point p{ratio(std::lround((50 + size * std::cos(a)) * 1e6), 1000000), ratio(std::lround((50 + size * std::sin(a)) * 1e6), 1000000)};
       if (!ring.empty() && p == ring.back()) continue;
       ring.push_back(p);
     }
-    // the convex hull of the rounded points (rounding may dent the circle)
-    std::vector<PointD> pts;
-    for (const Point& p : ring) pts.push_back({p.x.get_d(), p.y.get_d()});
+    // the vertices where the rounded ring turns left (rounding may dent the circle); a trial whose
+    // remaining ring is still not strictly convex is skipped
     Ring hull;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Point &a = ring[(i + ring.size() - 1) % ring.size()], &b = ring[i], &c = ring[(i + 1) % ring.size()];
-      if (sgn(Rational((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))) > 0) hull.push_back(b);
-    }
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      if (turn(ring[(i + ring.size() - 1) % ring.size()], ring[i], ring[(i + 1) % ring.size()]) > 0) hull.push_back(ring[i]);
     if (hull.size() < 3) continue;
     bool convex = true;
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-      const Point &a = hull[(i + hull.size() - 1) % hull.size()], &b = hull[i], &c = hull[(i + 1) % hull.size()];
-      convex = convex && sgn(Rational((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x))) > 0;
-    }
+    for (std::size_t i = 0; i < hull.size(); ++i)
+      convex = convex && turn(hull[(i + hull.size() - 1) % hull.size()], hull[i], hull[(i + 1) % hull.size()]) > 0;
     if (!convex) continue;
+    std::vector<PointD> ringD;
     for (const Point& p : hull) ringD.push_back({p.x.get_d(), p.y.get_d()});
     const double r = radii[rng() % 5], relEps = epss[rng() % 3];
     const CSpace cs(testing_helpers::boxWith({hull}, 100, 100), exactFromDouble(r), relEps);

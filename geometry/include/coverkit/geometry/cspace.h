@@ -16,7 +16,7 @@
 // and the closed convention's margin δ below assumes eps. Edges parallel to an axis (grid maps) are
 // exact. A fix measured (docs/architecture.md): tangents at angles below eps / (16·L) and
 // sqrt(eps / (16·r)) keep every piece within eps / 10 (and made the C-space of 1,000 convex
-// obstacles about 1.5× faster), but they change every figure made on polygon worlds; they wait
+// obstacles about 2× faster, docs/performance.md), but they change every figure made on polygon worlds; they wait
 // for a session that regenerates those.
 // eps defaults to 1e-6 × the workspace's extent (docs/architecture.md has the measured choice).
 //
