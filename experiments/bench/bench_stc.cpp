@@ -72,7 +72,8 @@ BENCHMARK(BM_FullStc)->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {0
 // time of each and their ratio per map (counters), with Smooth-STC's phases.
 static void BM_SmoothStcVsStc(benchmark::State& state) {
   int side = 0;
-  const planners::PlanningContext ctx = gridContext(4 * state.range(0), side);
+  planners::PlanningContext ctx = gridContext(4 * state.range(0), side);
+  ctx.threads = static_cast<unsigned>(state.range(1));  // Smooth-STC's sweeps; STC has no parallel phase
   double smoothSeconds = 0, stcSeconds = 0;
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
@@ -91,5 +92,10 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
   state.counters["smooth_s"] = smoothSeconds;
   state.counters["stc_s"] = stcSeconds;
   state.counters["ratio"] = stcSeconds > 0 ? smoothSeconds / stcSeconds : 0;
+  state.counters["threads"] = ctx.threads;
 }
-BENCHMARK(BM_SmoothStcVsStc)->RangeMultiplier(10)->Range(1'000, 1'000'000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SmoothStcVsStc)
+    ->ArgsProduct({{1'000, 10'000, 100'000, 1'000'000}, {1, 2}})
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);

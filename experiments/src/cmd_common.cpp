@@ -23,8 +23,8 @@ void addMapOptions(CLI::App* c, MapArgs& m, bool needRadius) {
 
 void addSpeedOptions(CLI::App* c, SpeedArgs& s, const std::string& defaultMetrics) {
   c->add_flag("--timings", s.timings, "print wall and CPU time per phase and the peak memory on stderr");
-  c->add_option("--threads", s.threads, "threads for the phases that split (validation of long paths, the metrics' rasters, the coverable region's two "
-                                        "C-spaces); 0, the default: every core. "
+  c->add_option("--threads", s.threads, "threads for the phases that split (Smooth-STC's sweeps, validation of long paths, the metrics' rasters, the "
+                                        "coverable region's two C-spaces); 0, the default: every core. "
                                         "The results do not depend on it")
       ->check(CLI::Range(0u, 1024u));
   s.metrics = defaultMetrics;

@@ -82,7 +82,8 @@ int runPlanCommand() {
   Problem problem = makeProblem(o.map.map, o.map.radius, o.start, o.map.unknownFree, o.map.cellSize);
   progress.step("classifying cells");
   timer.begin("cells");
-  const planners::PlanningContext ctx = planners::makeContext(std::move(problem));
+  planners::PlanningContext ctx = planners::makeContext(std::move(problem));
+  ctx.threads = threads();
   const std::map<std::string, std::string> phaseName{
       {"planning", "plan"}, {"post-processing", "post"}, {"validating", "validate"}, {"metrics", "metrics"}};
   const RunResult r = runOnce(ctx, o.planner, kv, timeLimit, [&](const std::string& what) {

@@ -48,14 +48,33 @@ double polygonArea(const Polygon& pg) {
   return a / 2;
 }
 
+/// The double of an exact number from its exact value. CGAL::to_double of a lazy number is the
+/// middle of its interval, which is tighter once something has asked for the exact value: the same
+/// point can give two doubles a few units in the last place apart, depending on what was computed
+/// before. Sweeps built from different pieces (CSpace::localSweeps, on any number of threads) must
+/// give the same doubles, so they are rounded from the exact value.
+inline double stableDouble(const K::FT& x) {
+  const auto& i = x.approx();
+  if (i.inf() == i.sup()) return i.inf();  // an interval that is one double encloses exactly that
+  CGAL::exact(x);
+  return CGAL::to_double(x);
+}
+/// The same for a coordinate a0 + a1·√root of the circle-segment traits.
+template <class CoordNT>
+double stableDouble(const CoordNT& x) {
+  const double a0 = stableDouble(x.a0());
+  return x.is_extended() ? a0 + stableDouble(x.a1()) * std::sqrt(stableDouble(x.root())) : a0;
+}
+
+/// A curve as a path piece in doubles; `stable`: rounded from the exact values (stableDouble).
 template <class XCurve>
-PathSegment toSegment(const XCurve& c) {
-  const PointD a{CGAL::to_double(c.source().x()), CGAL::to_double(c.source().y())};
-  const PointD b{CGAL::to_double(c.target().x()), CGAL::to_double(c.target().y())};
+PathSegment toSegment(const XCurve& c, bool stable = false) {
+  auto d = [stable](const auto& v) { return stable ? stableDouble(v) : CGAL::to_double(v); };
+  const PointD a{d(c.source().x()), d(c.source().y())};
+  const PointD b{d(c.target().x()), d(c.target().y())};
   if (!c.is_circular()) return PathSegment::line(a, b);
   const auto circ = c.supporting_circle();
-  return PathSegment::arc(a, b, {CGAL::to_double(circ.center().x()), CGAL::to_double(circ.center().y())},
-                          c.orientation() == CGAL::COUNTERCLOCKWISE);
+  return PathSegment::arc(a, b, {d(circ.center().x()), d(circ.center().y())}, c.orientation() == CGAL::COUNTERCLOCKWISE);
 }
 
 }  // namespace coverkit::detail

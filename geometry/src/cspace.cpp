@@ -73,8 +73,13 @@ bool closedLoops(const CPolygonWithHoles& p) {
   return true;
 }
 
+/// With `near`, only the triangles of a large polygon whose box comes within `reach` of `near` are
+/// offset (a triangle's offset lies within its box grown by r and CGAL's approximation, below
+/// `reach`); small polygons are offset whole as without it, so every piece is one the whole
+/// construction makes.
 template <class Polygon>
-void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double eps, std::vector<CPolygonWithHoles>& out) {
+void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double eps, std::vector<CPolygonWithHoles>& out,
+                  const BoxD* near = nullptr, double reach = 0) {
   constexpr std::size_t kWhole = 2000;
   if (vertices <= kWhole) {
     CPolygonWithHoles whole = CGAL::approximated_offset_2(p, r, eps);
@@ -86,7 +91,48 @@ void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double
   std::vector<LinearPolygon> triangles;
   CGAL::Polygon_triangulation_decomposition_2<K> decompose;
   decompose(p, std::back_inserter(triangles));
-  for (const LinearPolygon& t : triangles) out.push_back(CGAL::approximated_offset_2(t, r, eps));
+  for (const LinearPolygon& t : triangles) {
+    if (near) {
+      const CGAL::Bbox_2 b = t.bbox();
+      if (b.xmin() > near->xmax + reach || b.xmax() < near->xmin - reach || b.ymin() > near->ymax + reach ||
+          b.ymax() < near->ymin - reach)
+        continue;
+    }
+    out.push_back(CGAL::approximated_offset_2(t, r, eps));
+  }
+}
+
+/// The approximation bound: `relativeEps` of the workspace's extent.
+double epsilonOf(const Workspace& w, double relativeEps) {
+  const Box b = w.bbox();
+  const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
+  return relativeEps * std::max(extent, 1e-12);
+}
+
+/// A frame around the workspace's box, so that the outside of each region is a bounded polygon
+/// with a hole.
+Ring frameOf(const Workspace& w, const Rational& radius) {
+  const Box b = w.bbox();
+  const Rational pad = 4 * radius + 1;
+  return {{Rational(b.xmin - pad), Rational(b.ymin - pad)}, {Rational(b.xmax + pad), Rational(b.ymin - pad)},
+          {Rational(b.xmax + pad), Rational(b.ymax + pad)}, {Rational(b.xmin - pad), Rational(b.ymax + pad)}};
+}
+
+/// The C-obstacle pieces of ring k of a region: k = 0 the outside of the region (the frame with
+/// the region's outer ring as a hole; its offset shrinks the hole by r, which erodes the region),
+/// k >= 1 hole k - 1. Their union with the other rings' pieces is the complement of the region's
+/// C-free within the frame. Each call makes its own exact numbers (threads share none).
+void ringOffsets(const Region& reg, std::size_t k, const Ring& frame, const Rational& radius, double eps,
+                 std::vector<CPolygonWithHoles>& out, const BoxD* near = nullptr, double reach = 0) {
+  const K::FT r = ft(radius);
+  if (k == 0) {
+    const LinearPolygon outerHole = linear(reg.outer, false);
+    const LinearPolygonWithHoles outside(linear(frame, true), &outerHole, &outerHole + 1);
+    offsetPieces(outside, reg.outer.size() + 4, r, eps, out, near, reach);
+  } else {
+    const Ring& h = reg.holes[k - 1];
+    offsetPieces(linear(h, true), h.size(), r, eps, out, near, reach);
+  }
 }
 
 CurveLoop loopOf(const CPolygon& pg) {
@@ -160,13 +206,8 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, u
   impl_->radius = radius;
   impl_->workspace = w;
   impl_->relativeEps = relativeEps;
-  const Box b = w.bbox();
-  const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
-  impl_->eps = relativeEps * std::max(extent, 1e-12);
-  // A frame around everything, so that the outside of each region is a bounded polygon with a hole.
-  const Rational pad = 4 * radius + 1;
-  const Ring frame = {{Rational(b.xmin - pad), Rational(b.ymin - pad)}, {Rational(b.xmax + pad), Rational(b.ymin - pad)},
-                      {Rational(b.xmax + pad), Rational(b.ymax + pad)}, {Rational(b.xmin - pad), Rational(b.ymax + pad)}};
+  impl_->eps = epsilonOf(w, relativeEps);
+  const Ring frame = frameOf(w, radius);
   // Each region on its own: the disc in one region never reaches another (they are separated by
   // walls), and the outside of one region contains the others. Regions are disjoint, so their
   // components are simply collected (joining them one by one would cost quadratic time).
@@ -183,22 +224,10 @@ CSpace::CSpace(const Workspace& w, const Rational& radius, double relativeEps, u
   const double eps = impl_->eps;
   for (const Region& reg : w.regions) {
     if (radius == 0) break;
-    // job 0: outside of the region, the frame with the region's outer ring as a hole; its offset
-    // shrinks the hole by r, which is the region eroded by r. Job k: hole k - 1.
+    // job k: ringOffsets' ring k (0 the outside of the region, k >= 1 hole k - 1)
     const std::size_t jobs = reg.holes.size() + 1;
     std::vector<std::vector<CPolygonWithHoles>> offsets(jobs);
-    auto offsetJob = [&](std::size_t k) {
-      const K::FT r = ft(radius);
-      if (k == 0) {
-        const LinearPolygon outerHole = linear(reg.outer, false);
-        const LinearPolygonWithHoles outside(linear(frame, true), &outerHole, &outerHole + 1);
-        offsetPieces(outside, reg.outer.size() + 4, r, eps, offsets[0]);
-      } else {
-        const Ring& h = reg.holes[k - 1];
-        offsetPieces(linear(h, true), h.size(), r, eps, offsets[k]);
-      }
-    };
-    detail::parallelFor(jobs, threads, offsetJob);
+    detail::parallelFor(jobs, threads, [&](std::size_t k) { ringOffsets(reg, k, frame, radius, eps, offsets[k]); });
     std::vector<CPolygonWithHoles> cobs;
     std::size_t count = 0;
     for (const std::vector<CPolygonWithHoles>& o : offsets) count += o.size();
@@ -648,8 +677,8 @@ CPolygonWithHoles boxPolygon(const SweepBox& b) {
 /// Consecutive pieces of one circle (or one line) become one piece.
 void appendMerged(std::vector<PathSegment>& out, std::vector<XCurve>& run) {
   if (run.empty()) return;
-  PathSegment s = detail::toSegment(run.front());
-  s.to = detail::toSegment(run.back()).to;
+  PathSegment s = detail::toSegment(run.front(), true);
+  s.to = detail::toSegment(run.back(), true).to;
   out.push_back(s);
   run.clear();
 }
@@ -662,12 +691,9 @@ bool sameSupport(const XCurve& u, const XCurve& v) {
   return u.supporting_line() == v.supporting_line();
 }
 
-CSpace::Sweep sweepOne(const PolygonSet& S, const CSpace::SweepRequest& q) {
+/// The sweep of request q from U ∩ C-free (`pw`, its polygons).
+CSpace::Sweep sweepOf(const std::vector<CPolygonWithHoles>& pw, const CSpace::SweepRequest& q) {
   CSpace::Sweep out;
-  PolygonSet Q(boxPolygon(boxOf(q)));
-  Q.intersection(S);
-  std::vector<CPolygonWithHoles> pw;
-  Q.polygons_with_holes(std::back_inserter(pw));
   const bool horizontal = q.a.y == q.d.y;
   const K::FT line = ft(horizontal ? q.a.y : q.a.x);
   const int sign = horizontal ? (q.d.x > q.a.x ? 1 : -1) : (q.d.y > q.a.y ? 1 : -1);
@@ -720,12 +746,20 @@ CSpace::Sweep sweepOne(const PolygonSet& S, const CSpace::SweepRequest& q) {
   }
   appendMerged(out.pieces, run);
   const double a0 = horizontal ? q.a.x.get_d() : q.a.y.get_d(), d0 = horizontal ? q.d.x.get_d() : q.d.y.get_d();
-  auto toD = [](const detail::Traits::Point_2& p) { return PointD{CGAL::to_double(p.x()), CGAL::to_double(p.y())}; };
+  auto toD = [](const detail::Traits::Point_2& p) { return PointD{detail::stableDouble(p.x()), detail::stableDouble(p.y())}; };
   out.entry = toD(cs[bestCurve].target());
   out.exit = toD(cs[first].source());
   out.entryT = ((horizontal ? out.entry.x : out.entry.y) - a0) / (d0 - a0);
   out.exitT = ((horizontal ? out.exit.x : out.exit.y) - a0) / (d0 - a0);
   return out;
+}
+
+CSpace::Sweep sweepOne(const PolygonSet& S, const CSpace::SweepRequest& q) {
+  PolygonSet Q(boxPolygon(boxOf(q)));
+  Q.intersection(S);
+  std::vector<CPolygonWithHoles> pw;
+  Q.polygons_with_holes(std::back_inserter(pw));
+  return sweepOf(pw, q);
 }
 
 void sweepGroup(const PolygonSet& S, const std::vector<CSpace::SweepRequest>& requests, const std::vector<SweepBox>& boxes,
@@ -759,6 +793,203 @@ void sweepGroup(const PolygonSet& S, const std::vector<CSpace::SweepRequest>& re
   }
 }
 
+/// The C-obstacles near a box of the plane, for sweeps there without the whole C-space: the
+/// pieces of every ring that may come within reach of the box (ringOffsets, so exactly the pieces
+/// the CSpace constructor joins), those with many curves or a wide box cut into tiles of about
+/// `cell`, indexed by a grid of buckets of side `cell`.
+class LocalObstacles {
+public:
+  LocalObstacles(const Workspace& w, const Rational& radius, double eps, const BoxD& near, double cell) : cell_(cell) {
+    const Ring frame = frameOf(w, radius);
+    // An offset lies within r and the approximation's rise of its ring; the rise is below r
+    // (CGAL's tangents over an arc of radius r) and measured below 0.25 r (cspace.h), and every
+    // piece's box is checked against this reach below: a piece beyond it would be missed by the
+    // other boxes' obstacles, so it stops the computation instead of giving a wrong sweep.
+    const double r = radius.get_d(), reach = 2 * r + 1000 * eps, pad = 1e-9 * std::max({1.0, std::abs(near.xmin), std::abs(near.xmax),
+                                                                                        std::abs(near.ymin), std::abs(near.ymax)});
+    pad_ = pad;
+    x0_ = near.xmin - reach;
+    y0_ = near.ymin - reach;
+    nx_ = static_cast<long>((near.xmax + reach - x0_) / cell_) + 1;
+    ny_ = static_cast<long>((near.ymax + reach - y0_) / cell_) + 1;
+    const BoxD wide{near.xmin - reach, near.ymin - reach, near.xmax + reach, near.ymax + reach};
+    std::vector<std::pair<long, std::uint32_t>> pieceAt, regionAt;
+    for (std::size_t g = 0; g < w.regions.size(); ++g) {
+      const Region& reg = w.regions[g];
+      const BoxD outer = ringBox(reg.outer);
+      if (!overlaps(outer, near, pad)) continue;
+      // the region's C-free lies inside its outer ring's box; outside it and beyond `wide` no
+      // query looks, so big pieces are clipped to both before they are cut
+      const SweepBox clip{exactFromDouble(std::max(outer.xmin, wide.xmin)), exactFromDouble(std::max(outer.ymin, wide.ymin)),
+                          exactFromDouble(std::min(outer.xmax, wide.xmax)), exactFromDouble(std::min(outer.ymax, wide.ymax))};
+      if (!(clip.x0 < clip.x1 && clip.y0 < clip.y1)) continue;
+      regions_.push_back({clip, static_cast<std::uint32_t>(g)});
+      addTo(regionAt, {clip.x0.get_d(), clip.y0.get_d(), clip.x1.get_d(), clip.y1.get_d()}, static_cast<std::uint32_t>(regions_.size() - 1));
+      for (std::size_t k = 0; k <= reg.holes.size(); ++k) {
+        const BoxD rb = k == 0 ? outer : ringBox(reg.holes[k - 1]);
+        if (k > 0 && !overlaps(rb, near, reach)) continue;
+        std::vector<CPolygonWithHoles> offsets;
+        ringOffsets(reg, k, frame, radius, eps, offsets, &near, reach);
+        std::vector<CPolygonWithHoles> kept;
+        BoxD all{};
+        for (CPolygonWithHoles& o : offsets) {
+          const BoxD ob = polygonBox(o);
+          if (k > 0 && !inside(ob, rb, reach)) throw std::logic_error("CSpace::localSweeps: an obstacle's offset reaches beyond 2r");
+          if (!overlaps(ob, near, reach)) continue;
+          all = kept.empty() ? ob : BoxD{std::min(all.xmin, ob.xmin), std::min(all.ymin, ob.ymin), std::max(all.xmax, ob.xmax), std::max(all.ymax, ob.ymax)};
+          kept.push_back(std::move(o));
+        }
+        if (kept.empty()) continue;
+        const SweepBox start{std::max(clip.x0, Rational(exactFromDouble(all.xmin - pad))), std::max(clip.y0, Rational(exactFromDouble(all.ymin - pad))),
+                             std::min(clip.x1, Rational(exactFromDouble(all.xmax + pad))), std::min(clip.y1, Rational(exactFromDouble(all.ymax + pad)))};
+        if (!(start.x0 < start.x1 && start.y0 < start.y1)) continue;
+        // a large ring comes as the offsets of its triangles, which overlap (long thin ones fan out
+        // to the frame's corners): joined first, as the whole C-space joins them, then cut
+        PolygonSet ring;
+        if (kept.size() == 1) {
+          ring = PolygonSet(kept.front());
+        } else {
+          constexpr unsigned kJoinFanIn = 64;
+          ring.join(kept.begin(), kept.end(), kJoinFanIn);
+        }
+        cut(std::move(ring), start, regions_.size() - 1, pieceAt);
+      }
+    }
+    index(pieceAt, pieceStart_, pieceIds_);
+    index(regionAt, regionStart_, regionIds_);
+  }
+
+  /// U ∩ C-free for the box of a request inside `near`, as polygons.
+  std::vector<CPolygonWithHoles> freeIn(const SweepBox& box) const {
+    const BoxD b{box.x0.get_d(), box.y0.get_d(), box.x1.get_d(), box.y1.get_d()};
+    std::vector<std::uint32_t> regs = lookUp(b, regionStart_, regionIds_), ids = lookUp(b, pieceStart_, pieceIds_);
+    std::vector<CPolygonWithHoles> out;
+    for (std::uint32_t g : regs) {
+      const SweepBox& c = regions_[g].clip;
+      const SweepBox part{std::max(box.x0, c.x0), std::max(box.y0, c.y0), std::min(box.x1, c.x1), std::min(box.y1, c.y1)};
+      if (!(part.x0 < part.x1 && part.y0 < part.y1)) continue;
+      std::vector<const CPolygonWithHoles*> near;
+      for (std::uint32_t i : ids)
+        if (pieces_[i].region == g && overlaps(pieces_[i].box, b, pad_)) near.push_back(&pieces_[i].poly);
+      PolygonSet Q(boxPolygon(part));
+      if (near.size() == 1) {
+        Q.difference(*near.front());
+      } else if (!near.empty()) {
+        PolygonSet blocked;
+        std::vector<CPolygonWithHoles> ps;
+        ps.reserve(near.size());
+        for (const CPolygonWithHoles* p : near) ps.push_back(*p);
+        blocked.join(ps.begin(), ps.end());
+        Q.difference(blocked);
+      }
+      Q.polygons_with_holes(std::back_inserter(out));
+    }
+    return out;
+  }
+
+  std::size_t pieceCount() const { return pieces_.size(); }
+
+private:
+  struct Piece {
+    CPolygonWithHoles poly;
+    BoxD box;
+    std::size_t region;
+  };
+  struct Clip {
+    SweepBox clip;
+    std::uint32_t region;
+  };
+
+  static BoxD ringBox(const Ring& ring) {
+    BoxD b{ring.front().x.get_d(), ring.front().y.get_d(), ring.front().x.get_d(), ring.front().y.get_d()};
+    for (const Point& p : ring) {
+      const double x = p.x.get_d(), y = p.y.get_d();
+      b = {std::min(b.xmin, x), std::min(b.ymin, y), std::max(b.xmax, x), std::max(b.ymax, y)};
+    }
+    return b;
+  }
+  static BoxD polygonBox(const CPolygonWithHoles& p) {
+    CGAL::Bbox_2 b;
+    for (auto it = p.outer_boundary().curves_begin(); it != p.outer_boundary().curves_end(); ++it) b += it->bbox();
+    return {b.xmin(), b.ymin(), b.xmax(), b.ymax()};
+  }
+  static bool overlaps(const BoxD& a, const BoxD& b, double pad) {
+    return a.xmin <= b.xmax + pad && b.xmin <= a.xmax + pad && a.ymin <= b.ymax + pad && b.ymin <= a.ymax + pad;
+  }
+  static bool inside(const BoxD& a, const BoxD& b, double pad) {
+    return a.xmin >= b.xmin - pad && a.xmax <= b.xmax + pad && a.ymin >= b.ymin - pad && a.ymax <= b.ymax + pad;
+  }
+
+  /// Pieces with many curves or a box wider than a few cells are cut in halves (exact clips)
+  /// until they are small or their box is one cell; empty parts are dropped. The thresholds were
+  /// measured on Smooth-STC's clustered grid maps (BM_SmoothStcVsStc, 10^3 and 10^4 mega-cells):
+  /// 128 curves and 4 cells took 77 and 803 ms, 32 and 2 took 102 and 1,060 ms, 16 and 2 100 and
+  /// 1,055 ms, 64 and 8 90 and 873 ms, 256 and 4 76 and 928 ms.
+  void cut(PolygonSet&& set, const SweepBox& box, std::size_t region, std::vector<std::pair<long, std::uint32_t>>& at) {
+    constexpr std::size_t kCurves = 128;
+    constexpr double kSpan = 4;
+    if (set.is_empty()) return;
+    const double w = Rational(box.x1 - box.x0).get_d(), h = Rational(box.y1 - box.y0).get_d();
+    std::vector<CPolygonWithHoles> pw;
+    if ((set.arrangement().number_of_edges() <= kCurves && std::max(w, h) <= kSpan * cell_) || std::max(w, h) <= cell_) {
+      set.polygons_with_holes(std::back_inserter(pw));
+      for (CPolygonWithHoles& p : pw) {
+        const BoxD b = polygonBox(p);
+        pieces_.push_back({std::move(p), b, region});
+        addTo(at, b, static_cast<std::uint32_t>(pieces_.size() - 1));
+      }
+      return;
+    }
+    const bool alongX = w >= h;
+    const Rational mid = alongX ? Rational((box.x0 + box.x1) / 2) : Rational((box.y0 + box.y1) / 2);
+    const SweepBox halves[2] = {alongX ? SweepBox{box.x0, box.y0, mid, box.y1} : SweepBox{box.x0, box.y0, box.x1, mid},
+                                alongX ? SweepBox{mid, box.y0, box.x1, box.y1} : SweepBox{box.x0, mid, box.x1, box.y1}};
+    for (const SweepBox& half : halves) {
+      PolygonSet part(boxPolygon(half));
+      part.intersection(set);
+      cut(std::move(part), half, region, at);
+    }
+  }
+
+  long bucket(double v, double origin, long n) const {
+    return std::min(n - 1, std::max(0L, static_cast<long>(std::floor((v - origin) / cell_))));
+  }
+  void addTo(std::vector<std::pair<long, std::uint32_t>>& at, const BoxD& b, std::uint32_t id) const {
+    const long bx0 = bucket(b.xmin - pad_, x0_, nx_), bx1 = bucket(b.xmax + pad_, x0_, nx_);
+    const long by0 = bucket(b.ymin - pad_, y0_, ny_), by1 = bucket(b.ymax + pad_, y0_, ny_);
+    for (long by = by0; by <= by1; ++by)
+      for (long bx = bx0; bx <= bx1; ++bx) at.emplace_back(by * nx_ + bx, id);
+  }
+  void index(std::vector<std::pair<long, std::uint32_t>>& at, std::vector<std::size_t>& start, std::vector<std::uint32_t>& ids) const {
+    std::sort(at.begin(), at.end());
+    start.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+    for (const auto& [b, id] : at) ++start[static_cast<std::size_t>(b) + 1];
+    for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+    ids.resize(at.size());
+    for (std::size_t i = 0; i < at.size(); ++i) ids[i] = at[i].second;
+  }
+  std::vector<std::uint32_t> lookUp(const BoxD& b, const std::vector<std::size_t>& start, const std::vector<std::uint32_t>& ids) const {
+    std::vector<std::uint32_t> out;
+    const long bx0 = bucket(b.xmin - pad_, x0_, nx_), bx1 = bucket(b.xmax + pad_, x0_, nx_);
+    const long by0 = bucket(b.ymin - pad_, y0_, ny_), by1 = bucket(b.ymax + pad_, y0_, ny_);
+    for (long by = by0; by <= by1; ++by)
+      for (long bx = bx0; bx <= bx1; ++bx) {
+        const std::size_t k = static_cast<std::size_t>(by * nx_ + bx);
+        out.insert(out.end(), ids.begin() + static_cast<std::ptrdiff_t>(start[k]), ids.begin() + static_cast<std::ptrdiff_t>(start[k + 1]));
+      }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  double cell_, pad_ = 0, x0_ = 0, y0_ = 0;
+  long nx_ = 1, ny_ = 1;
+  std::vector<Clip> regions_;
+  std::vector<Piece> pieces_;
+  std::vector<std::size_t> pieceStart_, regionStart_;
+  std::vector<std::uint32_t> pieceIds_, regionIds_;
+};
+
 }  // namespace
 
 std::vector<CSpace::Sweep> CSpace::sweeps(const std::vector<SweepRequest>& requests) const {
@@ -778,6 +1009,47 @@ std::vector<CSpace::Sweep> CSpace::sweeps(const std::vector<SweepRequest>& reque
   std::vector<std::size_t> group(requests.size());
   for (std::size_t i = 0; i < group.size(); ++i) group[i] = i;
   sweepGroup(S, requests, boxes, group, out);
+  return out;
+}
+
+std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rational& radius, const std::vector<SweepRequest>& requests,
+                                               double relativeEps, unsigned threads) {
+  std::vector<Sweep> out(requests.size());
+  if (requests.empty()) return out;
+  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
+  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
+  checkWorkspace(w);
+  std::vector<SweepBox> boxes;
+  std::vector<double> sides;
+  for (const SweepRequest& q : requests) {
+    if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
+      throw std::invalid_argument("CSpace::localSweeps: the base must be axis-parallel, non-empty, with depth > 0");
+    boxes.push_back(boxOf(q));
+    sides.push_back(std::max(Rational(boxes.back().x1 - boxes.back().x0).get_d(), Rational(boxes.back().y1 - boxes.back().y0).get_d()));
+  }
+  // buckets about as large as the usual request (a mega-cell for Smooth-STC)
+  std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2), sides.end());
+  const double cell = sides[sides.size() / 2];
+  const double eps = epsilonOf(w, relativeEps);
+  // Requests in strips along x, one strip per thread; each strip builds its own obstacles from its
+  // own exact numbers (threads share none). The sets are exact, so the sweeps do not depend on
+  // the strips.
+  std::vector<std::size_t> order(requests.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto centre = [&](std::size_t i) { return Rational(boxes[i].x0 + boxes[i].x1).get_d(); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return centre(i) < centre(j); });
+  const std::size_t strips = std::min<std::size_t>(detail::threadCount(threads), order.size());
+  detail::parallelFor(strips, threads, [&](std::size_t k) {
+    const std::size_t from = order.size() * k / strips, to = order.size() * (k + 1) / strips;
+    BoxD near{boxes[order[from]].x0.get_d(), boxes[order[from]].y0.get_d(), boxes[order[from]].x1.get_d(), boxes[order[from]].y1.get_d()};
+    for (std::size_t j = from; j < to; ++j) {
+      const SweepBox& b = boxes[order[j]];
+      near = {std::min(near.xmin, b.x0.get_d()), std::min(near.ymin, b.y0.get_d()), std::max(near.xmax, b.x1.get_d()),
+              std::max(near.ymax, b.y1.get_d())};
+    }
+    const LocalObstacles obstacles(w, radius, eps, near, cell);
+    for (std::size_t j = from; j < to; ++j) out[order[j]] = sweepOf(obstacles.freeIn(boxes[order[j]]), requests[order[j]]);
+  });
   return out;
 }
 

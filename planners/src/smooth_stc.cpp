@@ -65,11 +65,6 @@
 
 namespace coverkit::planners {
 
-struct SmoothStcState {
-  std::unique_ptr<CSpace> cspace;   ///< radius r + ε + δ
-  double seconds = 0;
-};
-
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -97,12 +92,6 @@ Rational slackOf(const Workspace& w) {
   return exactFromDouble(std::ldexp(1.0, std::ilogb(1e-6 * extent) + 1)) + exactFromDouble(std::ldexp(1.0, std::ilogb(extent) - 36));
 }
 
-void buildCSpace(const PlanningContext& ctx, SmoothStcState& state) {
-  const auto t = Clock::now();
-  const Rational r = ctx.problem.robots.at(0).radius;
-  state.cspace = std::make_unique<CSpace>(ctx.problem.workspace, Rational(r + slackOf(ctx.problem.workspace)));
-  state.seconds = std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 /// A side of a mega-cell the walk goes along, with the mega-cell beyond it on the walk's right.
 struct Opening {
@@ -133,9 +122,9 @@ using PocketWalk = std::function<std::vector<CellIndex>(CellIndex start)>;
 /// by the main tour and the pockets' tours.
 class Refiner {
 public:
-  Refiner(const PlanningContext& ctx, const ParamSet& params, SmoothStcState& state, bool online, ClearanceChecker& check,
+  Refiner(const PlanningContext& ctx, const ParamSet& params, bool online, ClearanceChecker& check,
           PocketWalk pocketWalk)
-      : ctx_(ctx), cells_(ctx.cells), state_(state), online_(online), every_(params.text("entries") == "every"),
+      : ctx_(ctx), cells_(ctx.cells), online_(online), every_(params.text("entries") == "every"),
         throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"), check_(check),
         pocketWalk_(std::move(pocketWalk)), inTree_(cells_.megaCount(), 0), swept_(cells_.megaCount(), 0) {}
 
@@ -203,13 +192,15 @@ private:
 
   std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open) const {
     // Online, the robot decides each sweep as it reaches the mega-cell (Algorithm 2, step 2.4.1);
-    // a sweep depends only on its own request and C-free (cspace.h), so computing them in one batch
-    // gives the same pieces (tests/planners/smooth_stc_test.cpp compares), at n log n instead of the
-    // n × C-free of clipping the whole C-free once per sweep (260 s at 10^5 sub-cells).
+    // a sweep depends only on its own request and the C-obstacles near it (cspace.h), so computing
+    // them in one batch gives the same pieces (tests/planners/smooth_stc_test.cpp compares). Each
+    // is clipped from the C-obstacle pieces near its rectangle (CSpace::localSweeps): no C-space of
+    // the whole map is built, and the cost grows linearly with the sweeps.
     std::vector<CSpace::SweepRequest> requests;
     requests.reserve(open.size());
     for (const Opening& o : open) requests.push_back(requestOf(cells_, walk, o));
-    return state_.cspace->sweeps(requests);
+    const Rational r = ctx_.problem.robots.at(0).radius;
+    return CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads);
   }
 
   static std::array<int, 4> runKey(const Opening& o) {
@@ -360,7 +351,6 @@ private:
 
   const PlanningContext& ctx_;
   const CellGrid& cells_;
-  SmoothStcState& state_;
   bool online_, every_, throughRuns_, pockets_;
   ClearanceChecker& check_;
   PocketWalk pocketWalk_;
@@ -558,12 +548,10 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
 }
 
 void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path, Plan& plan,
-            SmoothStcState& state, bool online, PocketWalk pocketWalk) {
+            bool online, PocketWalk pocketWalk) {
   const auto t = Clock::now();
-  if (!state.cspace) buildCSpace(ctx, state);
-  plan.timings.emplace_back("cspace", state.seconds);
   ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
-  Refiner refiner(ctx, params, state, online, check, std::move(pocketWalk));
+  Refiner refiner(ctx, params, online, check, std::move(pocketWalk));
   refiner.tour(walk, path);
   refiner.report(plan);
   cutTips(ctx, check, path, plan);
@@ -577,9 +565,6 @@ const char* kClaim =
     "reached them";
 
 }  // namespace
-
-SmoothStcPlanner::SmoothStcPlanner() : state_(std::make_unique<SmoothStcState>()) {}
-SmoothStcPlanner::~SmoothStcPlanner() = default;
 
 std::string SmoothStcPlanner::description() const {
   return "Smooth-STC (Pham, Moore & Truong 2019), offline: STC over the free mega-cells; each partially occupied "
@@ -599,18 +584,14 @@ Capabilities SmoothStcPlanner::capabilities() const {
   return c;
 }
 
-void SmoothStcPlanner::prepare(const PlanningContext& ctx, const ParamSet&, Plan&) const { buildCSpace(ctx, *state_); }
 
 void SmoothStcPlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                                   Plan& plan) const {
   const graph::GridGraph g = buildGraph(ctx);
-  refine(ctx, walk, params, path, plan, *state_, false, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
+  refine(ctx, walk, params, path, plan, false, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
 }
 
 std::string SmoothStcPlanner::coverageClaim() const { return kClaim; }
-
-SmoothStcOnlinePlanner::SmoothStcOnlinePlanner() : state_(std::make_unique<SmoothStcState>()) {}
-SmoothStcOnlinePlanner::~SmoothStcOnlinePlanner() = default;
 
 std::string SmoothStcOnlinePlanner::description() const {
   return "Smooth-STC (Pham, Moore & Truong 2019), online: the Spiral-STC robot senses its four neighbouring "
@@ -629,12 +610,11 @@ Capabilities SmoothStcOnlinePlanner::capabilities() const {
   return c;
 }
 
-void SmoothStcOnlinePlanner::prepare(const PlanningContext& ctx, const ParamSet&, Plan&) const { buildCSpace(ctx, *state_); }
 
 void SmoothStcOnlinePlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params,
                                         Path& path, Plan& plan) const {
   const graph::GridGraph g = buildGraph(ctx);
-  refine(ctx, walk, params, path, plan, *state_, true, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
+  refine(ctx, walk, params, path, plan, true, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
 }
 
 std::string SmoothStcOnlinePlanner::coverageClaim() const { return kClaim; }

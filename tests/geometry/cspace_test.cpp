@@ -403,3 +403,110 @@ TEST(CSpace, ConvexOffsetsLieOutsideTheExactOne) {
     EXPECT_LT(highest, r + size);  // and not wildly: a loose sanity bound
   }
 }
+
+namespace {
+
+/// Sweep requests over the workspace's box: bases of length D along both axes in both directions,
+/// at every D/2 step, with depths 2D and 6D (a mega-cell, and a run of three).
+std::vector<CSpace::SweepRequest> sweepRequestsOver(const Workspace& w, const Rational& D) {
+  const Box b = w.bbox();
+  std::vector<CSpace::SweepRequest> out;
+  int k = 0;
+  for (Rational y = b.ymin + D / 4; y + D < b.ymax; y += D / 2)
+    for (Rational x = b.xmin + D / 4; x + D < b.xmax; x += D / 2, ++k) {
+      const Rational depth = k % 5 == 0 ? Rational(6 * D) : Rational(2 * D);
+      const Point p{x, y}, px{Rational(x + D), y}, py{x, Rational(y + D)};
+      switch (k % 4) {
+        case 0: out.push_back({p, px, depth}); break;
+        case 1: out.push_back({px, p, depth}); break;
+        case 2: out.push_back({p, py, depth}); break;
+        default: out.push_back({py, p, depth}); break;
+      }
+    }
+  return out;
+}
+
+::testing::AssertionResult sameSweeps(const std::vector<CSpace::Sweep>& a, const std::vector<CSpace::Sweep>& b) {
+  if (a.size() != b.size()) return ::testing::AssertionFailure() << a.size() << " against " << b.size() << " sweeps";
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const CSpace::Sweep &s = a[i], &t = b[i];
+    bool same = s.reached == t.reached && s.farSide == t.farSide && s.pieces.size() == t.pieces.size() && s.entry.x == t.entry.x &&
+                s.entry.y == t.entry.y && s.exit.x == t.exit.x && s.exit.y == t.exit.y;
+    for (std::size_t j = 0; same && j < s.pieces.size(); ++j) {
+      const PathSegment &p = s.pieces[j], &q = t.pieces[j];
+      same = p.kind == q.kind && p.from.x == q.from.x && p.from.y == q.from.y && p.to.x == q.to.x && p.to.y == q.to.y &&
+             (p.kind == PathSegment::Kind::kLine || (p.center.x == q.center.x && p.center.y == q.center.y && p.ccw == q.ccw));
+    }
+    if (!same) return ::testing::AssertionFailure() << "sweep " << i << " differs (" << s.pieces.size() << " and " << t.pieces.size() << " pieces)";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+// CSpace::localSweeps builds U ∩ C-free from the C-obstacle pieces near U: the same exact set as
+// the whole C-space's, so the same sweeps to the bit, for any number of threads. Worlds: seeded
+// polygon worlds (every shape), a clustered grid map (obstacles on the border: a ragged outer
+// ring), rooms that are separate regions, and an outer ring of more than 2,000 vertices (offset
+// as triangles, only those near the strip's requests).
+TEST(CSpace, LocalSweepsAreTheWholeCSpacesSweeps) {
+  std::vector<std::pair<Workspace, Rational>> worlds;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    datasets::PolygonWorldSpec s;
+    s.width = s.height = 12;
+    s.count = 8;
+    s.shape = datasets::ObstacleShape::kMixed;
+    s.minSize = 1;
+    s.maxSize = 2.5;
+    s.seed = seed;
+    worlds.emplace_back(datasets::generatePolygonWorld(s), ratio(1, 4));
+  }
+  datasets::GridMapSpec g;
+  g.width = g.height = 40;
+  g.density = 0.2;
+  g.clustered = true;
+  g.seed = 7;
+  worlds.emplace_back(datasets::gridToWorkspace(datasets::generateGridMap(g), "clustered"), ratio(1, 2));
+  worlds.emplace_back(datasets::parseTextGrid("resolution 1\n"
+                                              "###########\n"
+                                              "#....#....#\n"
+                                              "#.#..#....#\n"
+                                              "#....#.#..#\n"
+                                              "######....#\n"
+                                              "#....######\n"
+                                              "#.........#\n"
+                                              "###########\n",
+                                              "rooms.grid"),
+                  ratio(1, 4));
+  Region comb;  // 520 teeth along the bottom of a 52 × 6 room: 2,082 vertices
+  for (int t = 0; t < 520; ++t) {
+    const Rational x0 = ratio(t, 10), x1 = ratio(2 * t + 1, 20), x2 = ratio(t + 1, 10);
+    comb.outer.push_back({x0, 0});
+    comb.outer.push_back({x1, 0});
+    comb.outer.push_back({x1, 1});
+    comb.outer.push_back({x2, 1});
+  }
+  comb.outer.push_back({52, 6});
+  comb.outer.push_back({0, 6});
+  comb.holes = {{{10, 2}, {12, 2}, {12, 4}, {10, 4}}, {{40, 2}, {43, 4}, {41, 5}}};
+  Workspace combWorld;
+  combWorld.name = "comb";
+  combWorld.regions.push_back(comb);
+  normalise(combWorld);
+  ASSERT_GT(combWorld.regions.at(0).outer.size(), 2000u);
+  worlds.emplace_back(combWorld, ratio(1, 2));
+  for (const auto& [w, r] : worlds) {
+    const std::vector<CSpace::SweepRequest> requests = sweepRequestsOver(w, Rational(2 * r));
+    ASSERT_GT(requests.size(), 50u) << w.name;
+    const std::vector<CSpace::Sweep> whole = CSpace(w, r).sweeps(requests);
+    std::size_t reached = 0, arcs = 0;
+    for (const CSpace::Sweep& s : whole) {
+      reached += s.reached;
+      for (const PathSegment& p : s.pieces) arcs += p.kind == PathSegment::Kind::kArc;
+    }
+    EXPECT_GT(reached, requests.size() / 4) << w.name;
+    EXPECT_GT(arcs, 0u) << w.name;
+    EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests))) << w.name;
+    EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests, 1e-6, 3))) << w.name << ", 3 threads";
+  }
+}

@@ -193,6 +193,14 @@ public:
   /// All requests at once: C-free is clipped recursively to boxes around groups of requests, so the
   /// cost follows the requests and the curves near them, not requests × all curves.
   std::vector<Sweep> sweeps(const std::vector<SweepRequest>& requests) const;
+  /// The same sweeps as CSpace(w, radius, relativeEps).sweeps(requests), without that C-space:
+  /// each request's U ∩ C-free is built from the C-obstacle pieces near U only (the same exact
+  /// pieces the constructor joins, large ones cut into tiles about a request in size, found through
+  /// a grid of buckets), so the cost grows with the requests and the obstacles near them, never with
+  /// the union of all. The requests split into strips along x, one per thread (0: every core), each
+  /// with its own pieces; the sweeps do not depend on `threads`.
+  static std::vector<Sweep> localSweeps(const Workspace& w, const Rational& radius, const std::vector<SweepRequest>& requests,
+                                        double relativeEps = 1e-6, unsigned threads = 1);
 
 private:
   friend struct detail::CSpaceAccess;

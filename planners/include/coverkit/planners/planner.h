@@ -75,6 +75,9 @@ struct PlanningContext {
   Problem problem;
   CellGrid cells;                      ///< exact classification with D = problem.subCellSize()
   double cellSeconds = 0;              ///< time spent classifying (reported as a phase)
+  /// Threads a planner's heavy phases may use (0: every core; Smooth-STC's sweeps). Plans do not
+  /// depend on it. 1 by default: the experiment engine runs cases side by side instead.
+  unsigned threads = 1;
 };
 
 /// Checks robots, radii, starts and cell size against the workspace (InputError on bad input); the

@@ -6,60 +6,38 @@
 // docs/smooth-stc.md.
 #include <coverkit/planners/stc_skeleton.h>
 
-#include <memory>
-
-namespace coverkit {
-class CSpace;
-}
-
 namespace coverkit::planners {
-
-/// What the offline and online Smooth-STC share: the C-space (built once per plan) and the leaf
-/// sweeps inserted into the STC tour.
-struct SmoothStcState;
 
 /// Offline Smooth-STC (Algorithm 1): DFS counter-clockwise tree over the free mega-cells; each
 /// partially occupied mega-cell beside the tree is a leaf, swept along the exact C-space contour
 /// from the right of its input edge to its left.
 class SmoothStcPlanner : public StcSkeleton {
 public:
-  SmoothStcPlanner();
-  ~SmoothStcPlanner() override;
   std::string name() const override { return "smooth_stc"; }
   std::string description() const override;
   std::vector<ParamSpec> params() const override;
   Capabilities capabilities() const override;
 
 protected:
-  void prepare(const PlanningContext& context, const ParamSet& params, Plan& plan) const override;
   void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                   Plan& plan) const override;
   std::string coverageClaim() const override;
-
-private:
-  std::unique_ptr<SmoothStcState> state_;
 };
 
 /// Online Smooth-STC (Algorithm 2): the Spiral-STC robot (senses the four neighbouring mega-cells,
 /// grows the tree counter-clockwise as it goes); when it finds a partially occupied neighbour it
-/// builds the C-space there and sweeps its contour before going on.
+/// sweeps its C-space contour, built from the obstacles near it, before going on.
 class SmoothStcOnlinePlanner : public SpiralStcPlanner {
 public:
-  SmoothStcOnlinePlanner();
-  ~SmoothStcOnlinePlanner() override;
   std::string name() const override { return "smooth_stc_online"; }
   std::string description() const override;
   std::vector<ParamSpec> params() const override;
   Capabilities capabilities() const override;
 
 protected:
-  void prepare(const PlanningContext& context, const ParamSet& params, Plan& plan) const override;
   void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                   Plan& plan) const override;
   std::string coverageClaim() const override;
-
-private:
-  std::unique_ptr<SmoothStcState> state_;
 };
 
 }  // namespace coverkit::planners
