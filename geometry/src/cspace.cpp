@@ -21,6 +21,7 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <type_traits>
 
 namespace coverkit {
 
@@ -48,6 +49,146 @@ CPolygon curved(const Ring& ring, bool ccw) {
   CPolygon out;
   for (auto e = p.edges_begin(); e != p.edges_end(); ++e) out.push_back(Traits::X_monotone_curve_2(e->source(), e->target()));
   return out;
+}
+
+Rational exactOf(const K::FT& x) { return Rational(CGAL::exact(x)); }
+
+/// A unit vector of rational coordinates near the angle `psi`: tan of the half angle, relative to
+/// the nearest axis, rounded to a multiple of 2^-bits (the classic rational parametrisation of the
+/// circle), then turned by that axis's quarter turns. Exactly of length 1.
+std::pair<Rational, Rational> rationalUnit(double psi, int bits) {
+  const long q = std::lround(psi / M_PI_2);
+  const double t = std::tan((psi - static_cast<double>(q) * M_PI_2) / 2);  // |t| <= tan(π/8) + rounding
+  Rational tq(static_cast<long>(std::llround(std::ldexp(t, bits))));
+  tq /= Rational(mpz_class(1) << bits);
+  const Rational den = 1 + tq * tq, c = (1 - tq * tq) / den, s = 2 * tq / den;
+  switch (((q % 4) + 4) % 4) {
+    case 0: return {c, s};
+    case 1: return {-s, c};
+    case 2: return {-c, -s};
+    default: return {s, -c};
+  }
+}
+
+/// The offset of a strictly convex polygon by a disc, built directly (no arrangement), or false when
+/// the construction below cannot be certified (the caller then uses approximated_offset_2).
+/// Decision (issue 14): approximated_offset_2 computes a convolution cycle and then the union of its
+/// interior with an arrangement of its own for every polygon: 40 % of the C-space of 1,000 convex
+/// obstacles. And its eps does not bound the distance of its pieces from the exact offset (up to
+/// 93 × eps measured: cspace.h). For a convex polygon the cycle is already the boundary, so it is
+/// built here directly, with pieces of the same kinds (rational points, exact arcs, outside the
+/// exact offset) that stay within eps of it:
+///  - around each vertex v an exact arc of radius r between rational points v + r·u of the circle (u
+///    a rational unit vector from the rational parametrisation of the circle), which stops just
+///    short of the two edges' normals (the exact arc would end on them, at irrational points);
+///  - over an edge a→b, the two tangents of those circles at a + r·u₁ and b + r·u₂, where u₁ lies
+///    just before the edge's outward normal and u₂ just after it: they meet at a rational point above
+///    the exact offset edge (a roof).
+/// The roof's top lies about L·δ/2 + r·δ²/2 above the exact edge for angles δ: they are at most
+/// eps / (16·L) and sqrt(eps / (16·r)) (so within eps / 10 of it, rounding of the angles included),
+/// and a quarter of the smallest turn, so that every arc keeps a positive span. Each side (u₁ before
+/// n, u₂ after it, each arc counter-clockwise) is checked exactly. Edges parallel to an axis have a rational unit normal: offset exactly, one segment.
+/// Consecutive pieces share their end point's representation: the Boolean operations then see one
+/// point, not two equal ones that only an exact comparison tells apart.
+bool convexOffset(const LinearPolygon& p, const Rational& r, double eps, CPolygonWithHoles& out) {
+  // the vertices, counter-clockwise, without collinear ones
+  std::vector<std::pair<Rational, Rational>> v;
+  {
+    std::vector<std::pair<Rational, Rational>> all;
+    for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it) all.emplace_back(exactOf(it->x()), exactOf(it->y()));
+    const std::size_t n = all.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto &a = all[(i + n - 1) % n], &b = all[i], &c = all[(i + 1) % n];
+      const int o = sgn((b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first));
+      if (o < 0) return false;  // not convex
+      if (o > 0) v.push_back(b);
+    }
+  }
+  const std::size_t n = v.size();
+  if (n < 3 || r <= 0 || !(eps > 0)) return false;
+  std::vector<double> angle(n);  // of the outward normal (dy, −dx)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto &a = v[i], &b = v[(i + 1) % n];
+    angle[i] = std::atan2(Rational(a.first - b.first).get_d(), Rational(b.second - a.second).get_d());
+  }
+  const double rd = r.get_d();
+  double turnBound = 0.1;
+  for (std::size_t i = 0; i < n; ++i) {
+    double turn = angle[(i + 1) % n] - angle[i];
+    while (turn <= 0) turn += 2 * M_PI;
+    turnBound = std::min(turnBound, turn / 4);
+  }
+  struct Edge {
+    std::pair<Rational, Rational> before, after;  // unit vectors just before and just after the normal
+    bool axis = false;
+  };
+  std::vector<Edge> edges(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Edge& e = edges[i];
+    const auto &a = v[i], &b = v[(i + 1) % n];
+    const Rational nx = b.second - a.second, ny = a.first - b.first;
+    if (sgn(nx) == 0 || sgn(ny) == 0) {
+      e.axis = true;
+      e.before = e.after = {Rational(sgn(nx)), Rational(sgn(ny))};
+      continue;
+    }
+    const double len = std::hypot(nx.get_d(), ny.get_d());
+    const double delta = std::min({turnBound, eps / (16 * len), std::sqrt(eps / (16 * rd))});
+    if (!(delta > 1e-17)) return false;
+    const int bits = static_cast<int>(std::ceil(std::log2(8 / delta)));
+    if (bits > 62) return false;
+    e.before = rationalUnit(angle[i] - delta, bits);
+    e.after = rationalUnit(angle[i] + delta, bits);
+    auto side = [&](const std::pair<Rational, Rational>& u) { return sgn(nx * u.second - ny * u.first); };
+    if (side(e.before) >= 0 || side(e.after) <= 0) return false;  // rounding put one on the wrong side
+  }
+  for (std::size_t i = 0; i < n; ++i) {  // every arc turns counter-clockwise by less than a half turn
+    const auto &u = edges[(i + n - 1) % n].after, &w = edges[i].before;
+    if (sgn(u.first * w.second - u.second * w.first) <= 0) return false;
+  }
+  // The loop's corners in order, and the piece that leaves each: a segment, or an arc about a vertex
+  // (split at its leftmost or rightmost point, so that every arc is x-monotone).
+  struct Corner {
+    Rational x, y;
+    int arcAbout = -1;  // the vertex the piece leaving this corner turns about, or -1: a segment
+  };
+  std::vector<Corner> corners;
+  auto add = [&](const Rational& x, const Rational& y, int arc) { corners.push_back({x, y, arc}); };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Edge &prev = edges[(i + n - 1) % n], &e = edges[i];
+    const auto &a = v[i], &b = v[(i + 1) % n];
+    const auto &u = prev.after, &w = e.before;
+    add(a.first + r * u.first, a.second + r * u.second, static_cast<int>(i));
+    if (sgn(u.second) < 0 && sgn(w.second) > 0) add(a.first + r, a.second, static_cast<int>(i));        // rightmost point
+    else if (sgn(u.second) > 0 && sgn(w.second) < 0) add(a.first - r, a.second, static_cast<int>(i));   // leftmost point
+    add(a.first + r * w.first, a.second + r * w.second, -1);
+    if (e.axis) continue;  // straight on to the next arc's start
+    // the roof's top: the tangent at a + r·u₁ is u₁·x = u₁·a + r, the one at b + r·u₂ is u₂·x = u₂·b + r
+    const auto &u1 = e.before, &u2 = e.after;
+    const Rational c1 = u1.first * a.first + u1.second * a.second + r, c2 = u2.first * b.first + u2.second * b.second + r;
+    const Rational det = u1.first * u2.second - u1.second * u2.first;  // > 0: u₂ after u₁
+    add((c1 * u2.second - c2 * u1.second) / det, (u1.first * c2 - u2.first * c1) / det, -1);
+  }
+  std::vector<K::Point_2> kp;
+  std::vector<Traits::Point_2> tp;
+  for (const Corner& c : corners) {
+    kp.emplace_back(ft(c.x), ft(c.y));
+    tp.emplace_back(kp.back().x(), kp.back().y());
+  }
+  const K::FT r2 = ft(r * r);
+  CPolygon loop;
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const std::size_t next = (k + 1) % corners.size();
+    if (corners[k].arcAbout < 0) {
+      loop.push_back(Traits::X_monotone_curve_2(K::Line_2(kp[k], kp[next]), tp[k], tp[next]));
+    } else {
+      const auto& c = v[static_cast<std::size_t>(corners[k].arcAbout)];
+      const K::Circle_2 circle(K::Point_2(ft(c.first), ft(c.second)), r2, CGAL::COUNTERCLOCKWISE);
+      loop.push_back(Traits::X_monotone_curve_2(circle, tp[k], tp[next], CGAL::COUNTERCLOCKWISE));
+    }
+  }
+  out = CPolygonWithHoles(loop);
+  return true;
 }
 
 /// Offsets of a polygon (with holes) whose union is its approximated offset. Small polygons are
@@ -81,6 +222,13 @@ template <class Polygon>
 void offsetPieces(const Polygon& p, std::size_t vertices, const K::FT& r, double eps, std::vector<CPolygonWithHoles>& out,
                   const BoxD* near = nullptr, double reach = 0) {
   constexpr std::size_t kWhole = 2000;
+  if constexpr (std::is_same_v<Polygon, LinearPolygon>) {
+    CPolygonWithHoles direct;
+    if (convexOffset(p, exactOf(r), eps, direct)) {
+      out.push_back(std::move(direct));
+      return;
+    }
+  }
   if (vertices <= kWhole) {
     CPolygonWithHoles whole = CGAL::approximated_offset_2(p, r, eps);
     if (closedLoops(whole)) {
