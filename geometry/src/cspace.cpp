@@ -942,75 +942,96 @@ void sweepGroup(const PolygonSet& S, const std::vector<CSpace::SweepRequest>& re
 }
 
 /// The C-obstacles near a box of the plane, for sweeps there without the whole C-space: the
-/// pieces of every ring that may come within reach of the box (ringOffsets, so exactly the pieces
+/// pieces of the rings that may come within reach of the box (ringOffsets, so exactly the pieces
 /// the CSpace constructor joins), those with many curves or a wide box cut into tiles of about
-/// `cell`, indexed by a grid of buckets of side `cell`.
+/// `cell`, indexed by a grid of buckets of side `cell`. Rings are added all at once (addAllNear)
+/// or one by one as a robot learns them (addRing; its regions with addRegion).
 class LocalObstacles {
 public:
-  LocalObstacles(const Workspace& w, const Rational& radius, double eps, const BoxD& near, double cell) : cell_(cell) {
-    const Ring frame = frameOf(w, radius);
+  LocalObstacles(const Workspace& w, const Rational& radius, double eps, const BoxD& near, double cell)
+      : w_(w), radius_(radius), eps_(eps), near_(near), cell_(cell), frame_(frameOf(w, radius)), slot_(w.regions.size(), -1),
+        added_(w.regions.size()) {
     // An offset lies within r and the approximation's rise of its ring; the rise is below r
-    // (CGAL's tangents over an arc of radius r) and measured below 0.25 r (cspace.h), and every
-    // piece's box is checked against this reach below: a piece beyond it would be missed by the
-    // other boxes' obstacles, so it stops the computation instead of giving a wrong sweep.
-    const double r = radius.get_d(), reach = 2 * r + 1000 * eps, pad = 1e-9 * std::max({1.0, std::abs(near.xmin), std::abs(near.xmax),
-                                                                                        std::abs(near.ymin), std::abs(near.ymax)});
-    pad_ = pad;
-    x0_ = near.xmin - reach;
-    y0_ = near.ymin - reach;
-    nx_ = static_cast<long>((near.xmax + reach - x0_) / cell_) + 1;
-    ny_ = static_cast<long>((near.ymax + reach - y0_) / cell_) + 1;
-    const BoxD wide{near.xmin - reach, near.ymin - reach, near.xmax + reach, near.ymax + reach};
-    std::vector<std::pair<long, std::uint32_t>> pieceAt, regionAt;
-    for (std::size_t g = 0; g < w.regions.size(); ++g) {
-      const Region& reg = w.regions[g];
-      const BoxD outer = ringBox(reg.outer);
-      if (!overlaps(outer, near, pad)) continue;
-      // the region's C-free lies inside its outer ring's box; outside it and beyond `wide` no
-      // query looks, so big pieces are clipped to both before they are cut
-      const SweepBox clip{exactFromDouble(std::max(outer.xmin, wide.xmin)), exactFromDouble(std::max(outer.ymin, wide.ymin)),
-                          exactFromDouble(std::min(outer.xmax, wide.xmax)), exactFromDouble(std::min(outer.ymax, wide.ymax))};
-      if (!(clip.x0 < clip.x1 && clip.y0 < clip.y1)) continue;
-      regions_.push_back({clip, static_cast<std::uint32_t>(g)});
-      addTo(regionAt, {clip.x0.get_d(), clip.y0.get_d(), clip.x1.get_d(), clip.y1.get_d()}, static_cast<std::uint32_t>(regions_.size() - 1));
-      for (std::size_t k = 0; k <= reg.holes.size(); ++k) {
-        const BoxD rb = k == 0 ? outer : ringBox(reg.holes[k - 1]);
-        if (k > 0 && !overlaps(rb, near, reach)) continue;
-        std::vector<CPolygonWithHoles> offsets;
-        ringOffsets(reg, k, frame, radius, eps, offsets, &near, reach);
-        std::vector<CPolygonWithHoles> kept;
-        BoxD all{};
-        for (CPolygonWithHoles& o : offsets) {
-          const BoxD ob = polygonBox(o);
-          if (k > 0 && !inside(ob, rb, reach)) throw std::logic_error("CSpace::localSweeps: an obstacle's offset reaches beyond 2r");
-          if (!overlaps(ob, near, reach)) continue;
-          all = kept.empty() ? ob : BoxD{std::min(all.xmin, ob.xmin), std::min(all.ymin, ob.ymin), std::max(all.xmax, ob.xmax), std::max(all.ymax, ob.ymax)};
-          kept.push_back(std::move(o));
-        }
-        if (kept.empty()) continue;
-        const SweepBox start{std::max(clip.x0, Rational(exactFromDouble(all.xmin - pad))), std::max(clip.y0, Rational(exactFromDouble(all.ymin - pad))),
-                             std::min(clip.x1, Rational(exactFromDouble(all.xmax + pad))), std::min(clip.y1, Rational(exactFromDouble(all.ymax + pad)))};
-        if (!(start.x0 < start.x1 && start.y0 < start.y1)) continue;
-        // a large ring comes as the offsets of its triangles, which overlap (long thin ones fan out
-        // to the frame's corners): joined first, as the whole C-space joins them, then cut
-        PolygonSet ring;
-        if (kept.size() == 1) {
-          ring = PolygonSet(kept.front());
-        } else {
-          constexpr unsigned kJoinFanIn = 64;
-          ring.join(kept.begin(), kept.end(), kJoinFanIn);
-        }
-        cut(std::move(ring), start, regions_.size() - 1, pieceAt);
-      }
+    // (CGAL's tangents over an arc of radius r; eps for convex obstacles), and every piece's box
+    // is checked against this reach below: a piece beyond it would be missed by the other boxes'
+    // obstacles, so it stops the computation instead of giving a wrong sweep.
+    reach_ = 2 * radius.get_d() + 1000 * eps;
+    pad_ = 1e-9 * std::max({1.0, std::abs(near.xmin), std::abs(near.xmax), std::abs(near.ymin), std::abs(near.ymax)});
+    x0_ = near.xmin - reach_;
+    y0_ = near.ymin - reach_;
+    nx_ = static_cast<long>((near.xmax + reach_ - x0_) / cell_) + 1;
+    ny_ = static_cast<long>((near.ymax + reach_ - y0_) / cell_) + 1;
+    pieceAt_.resize(static_cast<std::size_t>(nx_ * ny_));
+    regionAt_.resize(static_cast<std::size_t>(nx_ * ny_));
+    for (std::size_t g = 0; g < w.regions.size(); ++g) added_[g].assign(w.regions[g].holes.size() + 1, 0);
+  }
+
+  /// Every region and ring that may come within reach of `near`.
+  void addAllNear() {
+    for (std::size_t g = 0; g < w_.regions.size(); ++g) {
+      if (!overlaps(ringBox(w_.regions[g].outer), near_, pad_)) continue;
+      addRegion(g);
+      for (std::size_t k = 0; k <= w_.regions[g].holes.size(); ++k)
+        if (k == 0 || overlaps(ringBox(w_.regions[g].holes[k - 1]), near_, reach_)) addRing(g, k);
     }
-    index(pieceAt, pieceStart_, pieceIds_);
-    index(regionAt, regionStart_, regionIds_);
+  }
+
+  /// Region g takes part in the queries (its C-free inside its outer ring's box, minus the pieces
+  /// of its rings added so far).
+  void addRegion(std::size_t g) {
+    if (slot_.at(g) >= 0) return;
+    const BoxD outer = ringBox(w_.regions[g].outer);
+    // the region's C-free lies inside its outer ring's box; outside it and beyond reach of `near`
+    // no query looks, so big pieces are clipped to both before they are cut
+    const BoxD wide{near_.xmin - reach_, near_.ymin - reach_, near_.xmax + reach_, near_.ymax + reach_};
+    const SweepBox clip{exactFromDouble(std::max(outer.xmin, wide.xmin)), exactFromDouble(std::max(outer.ymin, wide.ymin)),
+                        exactFromDouble(std::min(outer.xmax, wide.xmax)), exactFromDouble(std::min(outer.ymax, wide.ymax))};
+    slot_[g] = static_cast<int>(regions_.size());
+    regions_.push_back({clip, !(clip.x0 < clip.x1 && clip.y0 < clip.y1)});
+    if (!regions_.back().empty) addTo(regionAt_, {clip.x0.get_d(), clip.y0.get_d(), clip.x1.get_d(), clip.y1.get_d()}, static_cast<std::uint32_t>(slot_[g]));
+  }
+
+  /// The pieces of ring k of region g (0: the outside of the region, k >= 1: hole k - 1), once.
+  void addRing(std::size_t g, std::size_t k) {
+    addRegion(g);
+    if (added_[g].at(k)) return;
+    added_[g][k] = 1;
+    const Region& reg = w_.regions[g];
+    const Clip& region = regions_[static_cast<std::size_t>(slot_[g])];
+    if (region.empty) return;
+    const BoxD rb = k == 0 ? ringBox(reg.outer) : ringBox(reg.holes[k - 1]);
+    std::vector<CPolygonWithHoles> offsets;
+    ringOffsets(reg, k, frame_, radius_, eps_, offsets, &near_, reach_);
+    std::vector<CPolygonWithHoles> kept;
+    BoxD all{};
+    for (CPolygonWithHoles& o : offsets) {
+      const BoxD ob = polygonBox(o);
+      if (k > 0 && !inside(ob, rb, reach_)) throw std::logic_error("CSpace::localSweeps: an obstacle's offset reaches beyond 2r");
+      if (!overlaps(ob, near_, reach_)) continue;
+      all = kept.empty() ? ob : BoxD{std::min(all.xmin, ob.xmin), std::min(all.ymin, ob.ymin), std::max(all.xmax, ob.xmax), std::max(all.ymax, ob.ymax)};
+      kept.push_back(std::move(o));
+    }
+    if (kept.empty()) return;
+    const SweepBox& clip = region.clip;
+    const SweepBox start{std::max(clip.x0, Rational(exactFromDouble(all.xmin - pad_))), std::max(clip.y0, Rational(exactFromDouble(all.ymin - pad_))),
+                         std::min(clip.x1, Rational(exactFromDouble(all.xmax + pad_))), std::min(clip.y1, Rational(exactFromDouble(all.ymax + pad_)))};
+    if (!(start.x0 < start.x1 && start.y0 < start.y1)) return;
+    // a large ring comes as the offsets of its triangles, which overlap (long thin ones fan out
+    // to the frame's corners): joined first, as the whole C-space joins them, then cut
+    PolygonSet ring;
+    if (kept.size() == 1) {
+      ring = PolygonSet(kept.front());
+    } else {
+      constexpr unsigned kJoinFanIn = 64;
+      ring.join(kept.begin(), kept.end(), kJoinFanIn);
+    }
+    cut(std::move(ring), start, static_cast<std::size_t>(slot_[g]));
   }
 
   /// U ∩ C-free for the box of a request inside `near`, as polygons.
   std::vector<CPolygonWithHoles> freeIn(const SweepBox& box) const {
     const BoxD b{box.x0.get_d(), box.y0.get_d(), box.x1.get_d(), box.y1.get_d()};
-    std::vector<std::uint32_t> regs = lookUp(b, regionStart_, regionIds_), ids = lookUp(b, pieceStart_, pieceIds_);
+    std::vector<std::uint32_t> regs = lookUp(b, regionAt_), ids = lookUp(b, pieceAt_);
     std::vector<CPolygonWithHoles> out;
     for (std::uint32_t g : regs) {
       const SweepBox& c = regions_[g].clip;
@@ -1035,8 +1056,6 @@ public:
     return out;
   }
 
-  std::size_t pieceCount() const { return pieces_.size(); }
-
 private:
   struct Piece {
     CPolygonWithHoles poly;
@@ -1045,7 +1064,7 @@ private:
   };
   struct Clip {
     SweepBox clip;
-    std::uint32_t region;
+    bool empty;   ///< the region's box is beyond reach of `near`
   };
 
   static BoxD ringBox(const Ring& ring) {
@@ -1073,7 +1092,7 @@ private:
   /// measured on Smooth-STC's clustered grid maps (BM_SmoothStcVsStc, 10^3 and 10^4 mega-cells):
   /// 128 curves and 4 cells took 77 and 803 ms, 32 and 2 took 102 and 1,060 ms, 16 and 2 100 and
   /// 1,055 ms, 64 and 8 90 and 873 ms, 256 and 4 76 and 928 ms.
-  void cut(PolygonSet&& set, const SweepBox& box, std::size_t region, std::vector<std::pair<long, std::uint32_t>>& at) {
+  void cut(PolygonSet&& set, const SweepBox& box, std::size_t region) {
     constexpr std::size_t kCurves = 128;
     constexpr double kSpan = 4;
     if (set.is_empty()) return;
@@ -1084,7 +1103,7 @@ private:
       for (CPolygonWithHoles& p : pw) {
         const BoxD b = polygonBox(p);
         pieces_.push_back({std::move(p), b, region});
-        addTo(at, b, static_cast<std::uint32_t>(pieces_.size() - 1));
+        addTo(pieceAt_, b, static_cast<std::uint32_t>(pieces_.size() - 1));
       }
       return;
     }
@@ -1095,47 +1114,45 @@ private:
     for (const SweepBox& half : halves) {
       PolygonSet part(boxPolygon(half));
       part.intersection(set);
-      cut(std::move(part), half, region, at);
+      cut(std::move(part), half, region);
     }
   }
 
   long bucket(double v, double origin, long n) const {
     return std::min(n - 1, std::max(0L, static_cast<long>(std::floor((v - origin) / cell_))));
   }
-  void addTo(std::vector<std::pair<long, std::uint32_t>>& at, const BoxD& b, std::uint32_t id) const {
+  void addTo(std::vector<std::vector<std::uint32_t>>& at, const BoxD& b, std::uint32_t id) const {
     const long bx0 = bucket(b.xmin - pad_, x0_, nx_), bx1 = bucket(b.xmax + pad_, x0_, nx_);
     const long by0 = bucket(b.ymin - pad_, y0_, ny_), by1 = bucket(b.ymax + pad_, y0_, ny_);
     for (long by = by0; by <= by1; ++by)
-      for (long bx = bx0; bx <= bx1; ++bx) at.emplace_back(by * nx_ + bx, id);
+      for (long bx = bx0; bx <= bx1; ++bx) at[static_cast<std::size_t>(by * nx_ + bx)].push_back(id);
   }
-  void index(std::vector<std::pair<long, std::uint32_t>>& at, std::vector<std::size_t>& start, std::vector<std::uint32_t>& ids) const {
-    std::sort(at.begin(), at.end());
-    start.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
-    for (const auto& [b, id] : at) ++start[static_cast<std::size_t>(b) + 1];
-    for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-    ids.resize(at.size());
-    for (std::size_t i = 0; i < at.size(); ++i) ids[i] = at[i].second;
-  }
-  std::vector<std::uint32_t> lookUp(const BoxD& b, const std::vector<std::size_t>& start, const std::vector<std::uint32_t>& ids) const {
+  std::vector<std::uint32_t> lookUp(const BoxD& b, const std::vector<std::vector<std::uint32_t>>& at) const {
     std::vector<std::uint32_t> out;
     const long bx0 = bucket(b.xmin - pad_, x0_, nx_), bx1 = bucket(b.xmax + pad_, x0_, nx_);
     const long by0 = bucket(b.ymin - pad_, y0_, ny_), by1 = bucket(b.ymax + pad_, y0_, ny_);
     for (long by = by0; by <= by1; ++by)
       for (long bx = bx0; bx <= bx1; ++bx) {
-        const std::size_t k = static_cast<std::size_t>(by * nx_ + bx);
-        out.insert(out.end(), ids.begin() + static_cast<std::ptrdiff_t>(start[k]), ids.begin() + static_cast<std::ptrdiff_t>(start[k + 1]));
+        const auto& ids = at[static_cast<std::size_t>(by * nx_ + bx)];
+        out.insert(out.end(), ids.begin(), ids.end());
       }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
 
-  double cell_, pad_ = 0, x0_ = 0, y0_ = 0;
+  const Workspace& w_;
+  Rational radius_;
+  double eps_;
+  BoxD near_;
+  double cell_, reach_ = 0, pad_ = 0, x0_ = 0, y0_ = 0;
   long nx_ = 1, ny_ = 1;
+  Ring frame_;
+  std::vector<int> slot_;                              ///< region → its entry in regions_, or -1
+  std::vector<std::vector<std::uint8_t>> added_;       ///< region, ring → its pieces are in
   std::vector<Clip> regions_;
   std::vector<Piece> pieces_;
-  std::vector<std::size_t> pieceStart_, regionStart_;
-  std::vector<std::uint32_t> pieceIds_, regionIds_;
+  std::vector<std::vector<std::uint32_t>> pieceAt_, regionAt_;   ///< bucket → pieces, regions
 };
 
 }  // namespace
@@ -1195,10 +1212,45 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
       near = {std::min(near.xmin, b.x0.get_d()), std::min(near.ymin, b.y0.get_d()), std::max(near.xmax, b.x1.get_d()),
               std::max(near.ymax, b.y1.get_d())};
     }
-    const LocalObstacles obstacles(w, radius, eps, near, cell);
+    LocalObstacles obstacles(w, radius, eps, near, cell);
+    obstacles.addAllNear();
     for (std::size_t j = from; j < to; ++j) out[order[j]] = sweepOf(obstacles.freeIn(boxes[order[j]]), requests[order[j]]);
   });
   return out;
+}
+
+struct OnlineSweeper::Impl {
+  Impl(const Workspace& w, const Rational& radius, double cell, double relativeEps)
+      : workspace(w), obstacles(workspace, radius, epsilonOf(w, relativeEps), boxOfWorkspace(w), cell) {}
+  static BoxD boxOfWorkspace(const Workspace& w) {
+    const Box b = w.bbox();
+    return {b.xmin.get_d(), b.ymin.get_d(), b.xmax.get_d(), b.ymax.get_d()};
+  }
+  Workspace workspace;        ///< the rings' source; only those added are read
+  LocalObstacles obstacles;
+};
+
+OnlineSweeper::OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps) {
+  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
+  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
+  if (!(cell > 0)) throw std::invalid_argument("OnlineSweeper: the bucket size must be > 0");
+  checkWorkspace(w);
+  impl_ = std::make_unique<Impl>(w, radius, cell, relativeEps);
+}
+OnlineSweeper::~OnlineSweeper() = default;
+
+void OnlineSweeper::addRegion(std::size_t region) { impl_->obstacles.addRegion(region); }
+
+void OnlineSweeper::addRing(std::size_t region, std::size_t ring) {
+  if (region >= impl_->workspace.regions.size() || ring > impl_->workspace.regions[region].holes.size())
+    throw std::invalid_argument("OnlineSweeper::addRing: no such ring");
+  impl_->obstacles.addRing(region, ring);
+}
+
+CSpace::Sweep OnlineSweeper::sweep(const CSpace::SweepRequest& q) const {
+  if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
+    throw std::invalid_argument("OnlineSweeper::sweep: the base must be axis-parallel, non-empty, with depth > 0");
+  return sweepOf(impl_->obstacles.freeIn(boxOf(q)), q);
 }
 
 }  // namespace coverkit

@@ -44,15 +44,21 @@
 //    exactly against the true radius r (ClearanceChecker, as the validator reads lines and arcs),
 //    and a sweep with a failing piece is left out and counted (`sweeps_rejected`), never kept.
 //  - Online (Algorithm 2): the Spiral-STC robot (sensor of the four neighbouring mega-cells); when
-//    its walk reaches a side facing a mega-cell that is not free, it builds the C-space there (the
-//    sweep depends only on obstacles within r + ε + δ of U: x, y and their border) and sweeps it.
-//    Along a run the robot follows the contour from one mega-cell to the next and senses each as it
-//    reaches it; a pocket's tree is grown by the same online rule once the robot is in it. With the
-//    paper's dfs_ccw rule the path equals the offline one (tested).
+//    its walk reaches a side facing a mega-cell that is not free, it sweeps it from what its
+//    obstacle sensor has reported (ObstacleSensor: the rings that come into a mega-cell's box grown
+//    by a sub-cell, only for the robot's mega-cell and its neighbours; any other question throws).
+//    It senses its own mega-cell and the leaf, and along a run each next mega-cell from the one
+//    before as the contour reaches it; the sweep is made from the rings known so far
+//    (OnlineSweeper). A sweep depends only on obstacles within r + ε + δ < D of U, all of which
+//    have been reported by then, and the pieces are those of the offline planner, so with the
+//    paper's dfs_ccw rule the plan equals the offline one to the byte (tested). A pocket's tree is
+//    grown by the same rule once the robot is in it.
 #include <coverkit/planners/smooth_stc.h>
 
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/validate.h>
+
+#include <coverkit/planners/sensor.h>
 
 #include "walk_path.h"
 
@@ -122,9 +128,10 @@ using PocketWalk = std::function<std::vector<CellIndex>(CellIndex start)>;
 /// by the main tour and the pockets' tours.
 class Refiner {
 public:
-  Refiner(const PlanningContext& ctx, const ParamSet& params, bool online, ClearanceChecker& check,
-          PocketWalk pocketWalk)
-      : ctx_(ctx), cells_(ctx.cells), online_(online), every_(params.text("entries") == "every"),
+  /// Online, `sensor` and `sweeper` are given: each sweep is made from what the sensor has reported.
+  Refiner(const PlanningContext& ctx, const ParamSet& params, ClearanceChecker& check, PocketWalk pocketWalk,
+          ObstacleSensor* sensor = nullptr, OnlineSweeper* sweeper = nullptr)
+      : ctx_(ctx), cells_(ctx.cells), sensor_(sensor), sweeper_(sweeper), every_(params.text("entries") == "every"),
         throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"), check_(check),
         pocketWalk_(std::move(pocketWalk)), inTree_(cells_.megaCount(), 0), swept_(cells_.megaCount(), 0) {}
 
@@ -190,17 +197,40 @@ private:
     return out;
   }
 
-  std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open) const {
-    // Online, the robot decides each sweep as it reaches the mega-cell (Algorithm 2, step 2.4.1);
-    // a sweep depends only on its own request and the C-obstacles near it (cspace.h), so computing
-    // them in one batch gives the same pieces (tests/planners/smooth_stc_test.cpp compares). Each
-    // is clipped from the C-obstacle pieces near its rectangle (CSpace::localSweeps): no C-space of
-    // the whole map is built, and the cost grows linearly with the sweeps.
+  std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open) {
     std::vector<CSpace::SweepRequest> requests;
     requests.reserve(open.size());
     for (const Opening& o : open) requests.push_back(requestOf(cells_, walk, o));
-    const Rational r = ctx_.problem.robots.at(0).radius;
-    return CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads);
+    if (!sensor_) {
+      // Offline: each sweep clipped from the C-obstacle pieces near its rectangle
+      // (CSpace::localSweeps): no C-space of the whole map, a cost linear in the sweeps.
+      const Rational r = ctx_.problem.robots.at(0).radius;
+      return CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads);
+    }
+    // Online (Algorithm 2, step 2.4.1): the robot reaches each opening in walk order, senses its
+    // mega-cell and the leaf, and each further mega-cell of a run from the one before as the
+    // contour reaches it; the sweep is made from the obstacles reported so far (OnlineSweeper).
+    std::vector<CSpace::Sweep> out;
+    out.reserve(open.size());
+    auto learn = [&](const std::vector<ObstacleSensor::RingRef>& rings) {
+      for (const ObstacleSensor::RingRef& g : rings) sweeper_->addRing(g.region, g.ring);
+    };
+    for (std::size_t j = 0; j < open.size(); ++j) {
+      const Opening& o = open[j];
+      const int right = (o.dir + 3) & 3;
+      int col = walk[o.move].col / 2, row = walk[o.move].row / 2;
+      sensor_->moveTo(col, row);
+      learn(sensor_->sense(col, row));
+      for (int c = 0; c < o.run; ++c) {
+        const int next = o.leafCol + c * graph::kDx[right], nextRow = o.leafRow + c * graph::kDy[right];
+        sensor_->moveTo(col, row);
+        learn(sensor_->sense(next, nextRow));
+        col = next;
+        row = nextRow;
+      }
+      out.push_back(sweeper_->sweep(requests[j]));
+    }
+    return out;
   }
 
   static std::array<int, 4> runKey(const Opening& o) {
@@ -351,7 +381,9 @@ private:
 
   const PlanningContext& ctx_;
   const CellGrid& cells_;
-  bool online_, every_, throughRuns_, pockets_;
+  ObstacleSensor* sensor_;
+  OnlineSweeper* sweeper_;
+  bool every_, throughRuns_, pockets_;
   ClearanceChecker& check_;
   PocketWalk pocketWalk_;
   std::vector<std::uint8_t> inTree_, swept_;
@@ -551,9 +583,17 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
             bool online, PocketWalk pocketWalk) {
   const auto t = Clock::now();
   ClearanceChecker check(ctx.problem.workspace, ctx.problem.robots.at(0).radius);
-  Refiner refiner(ctx, params, online, check, std::move(pocketWalk));
+  std::unique_ptr<ObstacleSensor> sensor;
+  std::unique_ptr<OnlineSweeper> sweeper;
+  if (online) {
+    const Rational r = ctx.problem.robots.at(0).radius;
+    sensor = std::make_unique<ObstacleSensor>(ctx.problem.workspace, ctx.cells);
+    sweeper = std::make_unique<OnlineSweeper>(ctx.problem.workspace, Rational(r + slackOf(ctx.problem.workspace)), 2 * ctx.cells.subSizeD());
+  }
+  Refiner refiner(ctx, params, check, std::move(pocketWalk), sensor.get(), sweeper.get());
   refiner.tour(walk, path);
   refiner.report(plan);
+  if (sensor) plan.statistics["obstacle_sensor_queries"] = static_cast<double>(sensor->queries());
   cutTips(ctx, check, path, plan);
   if (params.text("corners") == "fill") fillCorners(ctx, check, path, plan);
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());

@@ -8,16 +8,14 @@
 // the construction replaces it by rational pieces that lie *outside* the exact offset, within eps.
 // So the C-obstacles used here contain the exact ones (an approximation errs outward, never inward)
 // and the C-free used here is contained in the exact C-free: whatever it calls free is free.
-// The approximation bound (found in issue 14, open): CGAL's eps bounds its approximation of each
-// edge's length, not the distance of its pieces from the exact offset. The tangents it puts over an
-// edge whose offset line is irrational rise higher: on seeded convex polygons (CSpace.
-// ConvexOffsetsLieOutsideTheExactOne) up to 93 × eps (0.0093 at eps = 1e-4, r = 0.05, a 9-gon of
-// size 0.28) and 2.4 at eps = 0.1, r = 10. Still outward (safe), but C-free is smaller than eps says
-// and the closed convention's margin δ below assumes eps. Edges parallel to an axis (grid maps) are
-// exact. A fix measured (docs/architecture.md): tangents at angles below eps / (16·L) and
-// sqrt(eps / (16·r)) keep every piece within eps / 10 (and made the C-space of 1,000 convex
-// obstacles about 2× faster, docs/performance.md), but they change every figure made on polygon worlds; they wait
-// for a session that regenerates those.
+// The approximation bound (found in issue 14): CGAL's eps bounds its approximation of each edge's
+// length, not the distance of its pieces from the exact offset (up to 93 × eps measured on seeded
+// convex polygons, 2.4 at eps = 0.1, r = 10: still outward, never inside). Strictly convex
+// obstacles are therefore offset by our own construction (cspace.cpp, convexOffset: exact arcs,
+// tangent roofs within eps / 10, checked exactly; CSpace.ConvexOffsetsLieOutsideTheExactOneWithinEps);
+// non-convex ones still by approximated_offset_2, whose pieces can lie further than eps outside near
+// slanted edges (C-free a little smaller there than eps says; the closed convention's margin δ
+// below assumes eps). Edges parallel to an axis (grid maps) are exact either way.
 // eps defaults to 1e-6 × the workspace's extent (docs/architecture.md has the measured choice).
 //
 // Decision (issue 12, "one convention for narrow gaps"): C-free is CLOSED, for the C-space, the
@@ -204,6 +202,30 @@ public:
 
 private:
   friend struct detail::CSpaceAccess;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Sweeps (CSpace::Sweep) for a robot that learns the obstacles as it goes (online Smooth-STC):
+/// U ∩ C-free is built from the rings added so far only, with the pieces CSpace::localSweeps
+/// uses, so a request whose nearby rings have all been added gets the same sweep as there. A
+/// region takes part once it is added (addRegion: the robot's own; addRing adds a ring's region
+/// too), with its C-free inside its outer ring's box minus the pieces of its rings added so far:
+/// the caller must add every ring within r of a request's rectangle before asking for it (a
+/// sensor's report of the mega-cells around it does). eps is the whole map's (its extent is known).
+class OnlineSweeper {
+public:
+  /// `cell`: the side of the buckets that index the pieces (a mega-cell).
+  OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps = 1e-6);
+  ~OnlineSweeper();
+  OnlineSweeper(const OnlineSweeper&) = delete;
+  OnlineSweeper& operator=(const OnlineSweeper&) = delete;
+  void addRegion(std::size_t region);
+  /// Ring 0 of a region is its outer ring (the walls: the outside's offset), ring k >= 1 hole k - 1.
+  void addRing(std::size_t region, std::size_t ring);
+  CSpace::Sweep sweep(const CSpace::SweepRequest& q) const;
+
+private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -4,6 +4,7 @@
 // an exception (never a silent answer), and every question is logged, so tests can prove that an
 // online planner is online.
 #include <coverkit/geometry/cell_grid.h>
+#include <coverkit/geometry/types.h>
 #include <coverkit/graph/grid_graph.h>
 
 #include <cstdlib>
@@ -80,6 +81,31 @@ private:
   const CellGrid& cells_;
   CellIndex here_;
   std::vector<Query> log_;
+};
+
+/// What the online Smooth-STC robot senses of the obstacles' geometry: asked about a mega-cell, it
+/// reports the rings of the workspace (a region's outer ring, the walls, or a hole) that come into
+/// that mega-cell's box grown by one sub-cell (decided by the boxes of the rings' edges, so it may
+/// report a ring that only passes near), which is all a sweep inside the mega-cell needs: a sweep
+/// depends on what lies within r + ε + δ < D of its rectangle. It answers only for the robot's
+/// mega-cell and its four neighbours; any other question throws std::logic_error, and every
+/// question is counted. The robot's place is set with moveTo (its walk is the Spiral-STC robot's,
+/// itself proven online by MegaCellSensor); a blocked mega-cell or one outside the grid is refused.
+class ObstacleSensor {
+public:
+  struct RingRef {
+    std::size_t region, ring;   ///< ring 0: the region's outer ring; k >= 1: hole k - 1
+  };
+  ObstacleSensor(const Workspace& w, const CellGrid& cells);
+  void moveTo(int col, int row);
+  const std::vector<RingRef>& sense(int col, int row);
+  std::size_t queries() const { return queries_; }
+
+private:
+  const CellGrid& cells_;
+  int col_ = -1, row_ = -1;
+  std::size_t queries_ = 0;
+  std::vector<std::vector<RingRef>> near_;   ///< per mega-cell (row-major)
 };
 
 }  // namespace coverkit::planners
