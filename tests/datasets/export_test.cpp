@@ -118,14 +118,7 @@ TEST(SafeExport, SmoothStcOnPillarsStaysValidAsCsvAndGeoJson) {
 
 TEST(SafeExport, SmoothStcOnSeededWorldsStaysValid) {
   for (std::uint64_t seed : {3u, 11u, 29u}) {
-    datasets::PolygonWorldSpec s;
-    s.width = s.height = 12;
-    s.count = 7;
-    s.shape = datasets::ObstacleShape::kMixed;
-    s.minSize = 1;
-    s.maxSize = 2.5;
-    s.seed = seed;
-    const Workspace w = datasets::generatePolygonWorld(s);
+    const Workspace w = testing_helpers::mixedWorld(seed, 12, 7);
     for (const Rational& r : {Rational(1, 4), Rational(3, 10)}) {
       SCOPED_TRACE("seed " + std::to_string(seed) + " r " + r.get_str());
       const auto ctx = testing_helpers::contextFor(w, r);

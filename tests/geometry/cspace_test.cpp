@@ -4,6 +4,7 @@
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/validate.h>
 
+#include "helpers/checkers.h"
 #include "helpers/worlds.h"
 
 #include <gtest/gtest.h>
@@ -453,16 +454,7 @@ std::vector<CSpace::SweepRequest> sweepRequestsOver(const Workspace& w, const Ra
 // as triangles, only those near the strip's requests).
 TEST(CSpace, LocalSweepsAreTheWholeCSpacesSweeps) {
   std::vector<std::pair<Workspace, Rational>> worlds;
-  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    datasets::PolygonWorldSpec s;
-    s.width = s.height = 12;
-    s.count = 8;
-    s.shape = datasets::ObstacleShape::kMixed;
-    s.minSize = 1;
-    s.maxSize = 2.5;
-    s.seed = seed;
-    worlds.emplace_back(datasets::generatePolygonWorld(s), ratio(1, 4));
-  }
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) worlds.emplace_back(testing_helpers::mixedWorld(seed, 12, 8), ratio(1, 4));
   datasets::GridMapSpec g;
   g.width = g.height = 40;
   g.density = 0.2;

@@ -29,6 +29,17 @@ std::vector<std::pair<std::string, Workspace>> contractWorlds() {
   return worlds;
 }
 
+Workspace mixedWorld(std::uint64_t seed, int size, int obstacles) {
+  datasets::PolygonWorldSpec s;
+  s.width = s.height = size;
+  s.count = obstacles;
+  s.shape = datasets::ObstacleShape::kMixed;
+  s.minSize = 1;
+  s.maxSize = 2.5;
+  s.seed = seed;
+  return datasets::generatePolygonWorld(s);
+}
+
 Rational contractRadius(const std::string& label) { return label.rfind("grid", 0) == 0 ? Rational(1, 10) : Rational(1, 4); }
 
 ::testing::AssertionResult planIsValid(const planners::PlanningContext& ctx, const Plan& plan) {

@@ -14,6 +14,8 @@ namespace coverkit::testing_helpers {
 /// The contract test's seeded worlds: six grid maps (resolution 1/10, 0-12 % blocked, scattered
 /// and clustered) and six polygon worlds (8 obstacles of four shapes), with their labels.
 std::vector<std::pair<std::string, Workspace>> contractWorlds();
+/// A seeded size × size polygon world of `obstacles` mixed obstacles of 1-2.5 m (the Smooth-STC tests').
+Workspace mixedWorld(std::uint64_t seed, int size, int obstacles);
 /// The radius the contract test gives a robot on a contract world: 1/10 on grids, 1/4 on polygons.
 Rational contractRadius(const std::string& label);
 

@@ -18,16 +18,7 @@ using namespace coverkit;
 
 namespace {
 
-Workspace polygonWorld(std::uint64_t seed, int size, int obstacles) {
-  datasets::PolygonWorldSpec s;
-  s.width = s.height = size;
-  s.count = obstacles;
-  s.shape = datasets::ObstacleShape::kMixed;
-  s.minSize = 1;
-  s.maxSize = 2.5;
-  s.seed = seed;
-  return datasets::generatePolygonWorld(s);
-}
+Workspace polygonWorld(std::uint64_t seed, int size, int obstacles) { return testing_helpers::mixedWorld(seed, size, obstacles); }
 
 double coverable(const planners::PlanningContext& ctx, const Plan& plan) {
   MetricOptions o;
