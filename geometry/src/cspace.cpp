@@ -959,8 +959,12 @@ public:
     pad_ = 1e-9 * std::max({1.0, std::abs(near.xmin), std::abs(near.xmax), std::abs(near.ymin), std::abs(near.ymax)});
     x0_ = near.xmin - reach_;
     y0_ = near.ymin - reach_;
-    nx_ = static_cast<long>((near.xmax + reach_ - x0_) / cell_) + 1;
-    ny_ = static_cast<long>((near.ymax + reach_ - y0_) / cell_) + 1;
+    // at most about 4 million buckets (two vectors each: under 200 MB), however small the cells
+    constexpr double kMaxBuckets = 4.0 * 1024 * 1024;
+    const double spanX = near.xmax + reach_ - x0_, spanY = near.ymax + reach_ - y0_;
+    cell_ = std::max({cell_, std::sqrt(2 * spanX * spanY / kMaxBuckets), 2 * std::max(spanX, spanY) / kMaxBuckets});
+    nx_ = static_cast<long>(spanX / cell_) + 1;
+    ny_ = static_cast<long>(spanY / cell_) + 1;
     pieceAt_.resize(static_cast<std::size_t>(nx_ * ny_));
     regionAt_.resize(static_cast<std::size_t>(nx_ * ny_));
     for (std::size_t g = 0; g < w.regions.size(); ++g) added_[g].assign(w.regions[g].holes.size() + 1, 0);

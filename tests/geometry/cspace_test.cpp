@@ -503,4 +503,19 @@ TEST(CSpace, LocalSweepsAreTheWholeCSpacesSweeps) {
     EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests))) << w.name;
     EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests, 1e-6, 3))) << w.name << ", 3 threads";
   }
+  // A small robot in a huge map: requests of 0.04 m spread over 100 km would ask for 10^13 buckets;
+  // their count is capped (coarser buckets, the same sweeps).
+  const Workspace huge = boxWith({{{10, 10}, {11, 10}, {11, 11}, {10, 11}}, {{99000, 99000}, {99001, 99000}, {99000, 99001}}}, 100000, 100000);
+  const Rational small(1, 100), D(1, 50);
+  std::vector<CSpace::SweepRequest> requests;
+  for (const Rational& at : {Rational(10), Rational(99000)})
+    for (int k = -3; k <= 3; ++k) {
+      const Point p{Rational(at + k * D), Rational(at - D / 2)}, q{Rational(at + k * D + D), Rational(at - D / 2)};
+      requests.push_back({q, p, Rational(2 * D)});
+    }
+  const std::vector<CSpace::Sweep> whole = CSpace(huge, small).sweeps(requests);
+  EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(huge, small, requests))) << "huge map";
+  std::size_t reached = 0;
+  for (const CSpace::Sweep& sw : whole) reached += sw.reached;
+  EXPECT_GT(reached, 4u);
 }
