@@ -261,3 +261,28 @@ TEST(Concurrency, CSpaceOffsetsAndValidatorRangesOnThreadsGiveTheOneThreadResult
   EXPECT_NE(serial.find("clearance"), std::string::npos);   // it crosses obstacles: violations in order
   EXPECT_EQ(report(3), serial);
 }
+
+// Smooth-STC's sweeps on strips of requests, one per thread (CSpace::localSweeps, each strip with
+// its own exact numbers): the plan with `threads` 3 is the one-thread plan, byte for byte.
+TEST(Concurrency, SmoothStcSweepsOnThreadsGiveTheOneThreadPlan) {
+  datasets::PolygonWorldSpec spec;
+  spec.width = spec.height = 12;
+  spec.count = 8;
+  spec.shape = datasets::ObstacleShape::kMixed;
+  spec.seed = 5;
+  Problem p;
+  p.workspace = datasets::generatePolygonWorld(spec);
+  p.robots.push_back({Rational(1, 4), std::nullopt});
+  planners::PlanningContext ctx = planners::makeContext(p);
+  auto planText = [&](unsigned threads) {
+    ctx.threads = threads;
+    const Plan plan = planners::runPlanner("smooth_stc", ctx, {});
+    std::ostringstream out;
+    out.precision(17);
+    for (const PathSegment& s : plan.paths.at(0).segments) out << s.from.x << " " << s.from.y << " " << s.to.x << " " << s.to.y << "\n";
+    return out.str();
+  };
+  const std::string one = planText(1);
+  EXPECT_GT(one.size(), 1000u);
+  EXPECT_EQ(planText(3), one);
+}
