@@ -21,6 +21,7 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace coverkit {
@@ -1159,17 +1160,28 @@ private:
   std::vector<std::vector<std::uint32_t>> pieceAt_, regionAt_;   ///< bucket → pieces, regions
 };
 
+/// The box of a sweep request, or std::invalid_argument (naming `who`) for a base that is not
+/// axis-parallel, is empty, or has no depth.
+SweepBox checkedBox(const CSpace::SweepRequest& q, const char* who) {
+  if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
+    throw std::invalid_argument(std::string(who) + ": the base must be axis-parallel, non-empty, with depth > 0");
+  return boxOf(q);
+}
+
+/// What the sweeps without a CSpace need of their input (the CSpace constructor checks the same).
+void checkSweepInput(const Workspace& w, const Rational& radius) {
+  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
+  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
+  checkWorkspace(w);  // CGAL's preconditions are not input validation
+}
+
 }  // namespace
 
 std::vector<CSpace::Sweep> CSpace::sweeps(const std::vector<SweepRequest>& requests) const {
   std::vector<Sweep> out(requests.size());
   if (requests.empty()) return out;
   std::vector<SweepBox> boxes;
-  for (const SweepRequest& q : requests) {
-    if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
-      throw std::invalid_argument("CSpace::sweeps: the base must be axis-parallel, non-empty, with depth > 0");
-    boxes.push_back(boxOf(q));
-  }
+  for (const SweepRequest& q : requests) boxes.push_back(checkedBox(q, "CSpace::sweeps"));
   if (!impl_->sweepSet) {
     impl_->sweepSet = std::make_unique<PolygonSet>();
     impl_->sweepSet->insert(impl_->parts.begin(), impl_->parts.end());
@@ -1185,15 +1197,11 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
                                                double relativeEps, unsigned threads) {
   std::vector<Sweep> out(requests.size());
   if (requests.empty()) return out;
-  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
-  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
-  checkWorkspace(w);
+  checkSweepInput(w, radius);
   std::vector<SweepBox> boxes;
   std::vector<double> sides;
   for (const SweepRequest& q : requests) {
-    if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
-      throw std::invalid_argument("CSpace::localSweeps: the base must be axis-parallel, non-empty, with depth > 0");
-    boxes.push_back(boxOf(q));
+    boxes.push_back(checkedBox(q, "CSpace::localSweeps"));
     sides.push_back(std::max(Rational(boxes.back().x1 - boxes.back().x0).get_d(), Rational(boxes.back().y1 - boxes.back().y0).get_d()));
   }
   // buckets about as large as the usual request (a mega-cell for Smooth-STC)
@@ -1225,20 +1233,18 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
 
 struct OnlineSweeper::Impl {
   Impl(const Workspace& w, const Rational& radius, double cell, double relativeEps)
-      : workspace(w), obstacles(workspace, radius, epsilonOf(w, relativeEps), boxOfWorkspace(w), cell) {}
+      : workspace(w), obstacles(w, radius, epsilonOf(w, relativeEps), boxOfWorkspace(w), cell) {}
   static BoxD boxOfWorkspace(const Workspace& w) {
     const Box b = w.bbox();
     return {b.xmin.get_d(), b.ymin.get_d(), b.xmax.get_d(), b.ymax.get_d()};
   }
-  Workspace workspace;        ///< the rings' source; only those added are read
+  const Workspace& workspace;   ///< the rings' source (the caller's); only those added are read
   LocalObstacles obstacles;
 };
 
 OnlineSweeper::OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps) {
-  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
-  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
   if (!(cell > 0)) throw std::invalid_argument("OnlineSweeper: the bucket size must be > 0");
-  checkWorkspace(w);
+  checkSweepInput(w, radius);
   impl_ = std::make_unique<Impl>(w, radius, cell, relativeEps);
 }
 OnlineSweeper::~OnlineSweeper() = default;
@@ -1252,9 +1258,7 @@ void OnlineSweeper::addRing(std::size_t region, std::size_t ring) {
 }
 
 CSpace::Sweep OnlineSweeper::sweep(const CSpace::SweepRequest& q) const {
-  if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
-    throw std::invalid_argument("OnlineSweeper::sweep: the base must be axis-parallel, non-empty, with depth > 0");
-  return sweepOf(impl_->obstacles.freeIn(boxOf(q)), q);
+  return sweepOf(impl_->obstacles.freeIn(checkedBox(q, "OnlineSweeper::sweep")), q);
 }
 
 }  // namespace coverkit

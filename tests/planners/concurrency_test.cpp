@@ -5,6 +5,8 @@
 // thread-safe, a shared random generator) would make results differ here, or ThreadSanitizer
 // report a race: `bash .ci/bootstrap tsan` runs these tests built with -fsanitize=thread
 // (docs/fuzzing.md, "ThreadSanitizer").
+#include "helpers/checkers.h"
+
 #include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/path_io.h>
 #include <coverkit/geometry/cspace.h>
@@ -265,13 +267,8 @@ TEST(Concurrency, CSpaceOffsetsAndValidatorRangesOnThreadsGiveTheOneThreadResult
 // Smooth-STC's sweeps on strips of requests, one per thread (CSpace::localSweeps, each strip with
 // its own exact numbers): the plan with `threads` 3 is the one-thread plan, byte for byte.
 TEST(Concurrency, SmoothStcSweepsOnThreadsGiveTheOneThreadPlan) {
-  datasets::PolygonWorldSpec spec;
-  spec.width = spec.height = 12;
-  spec.count = 8;
-  spec.shape = datasets::ObstacleShape::kMixed;
-  spec.seed = 5;
   Problem p;
-  p.workspace = datasets::generatePolygonWorld(spec);
+  p.workspace = testing_helpers::mixedWorld(5, 12, 8);
   p.robots.push_back({Rational(1, 4), std::nullopt});
   planners::PlanningContext ctx = planners::makeContext(p);
   auto planText = [&](unsigned threads) {

@@ -215,7 +215,8 @@ private:
 /// sensor's report of the mega-cells around it does). eps is the whole map's (its extent is known).
 class OnlineSweeper {
 public:
-  /// `cell`: the side of the buckets that index the pieces (a mega-cell).
+  /// `cell`: the side of the buckets that index the pieces (a mega-cell). `w` is read as rings are
+  /// added: it must outlive the sweeper (it is not copied).
   OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps = 1e-6);
   ~OnlineSweeper();
   OnlineSweeper(const OnlineSweeper&) = delete;
