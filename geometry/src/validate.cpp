@@ -193,8 +193,11 @@ public:
         if (inRange(isub({P.x + s * d.x, P.y + s * d.y}, C_)) != 0) return I(0);  // may meet the arc
       }
     }
-    I best = imin(imin(lbPointSeg(F_, P, Q), lbPointSeg(Tp_, P, Q)),
-                  imin(imin(pointArc(P), pointArc(Q)), lbSegSeg(Tp_, T_, P, Q)));
+    // the jump from Tp to t: where t lies (almost) on the circle it is (almost) a point, and the
+    // orientation tests of lbSegSeg cannot decide a degenerate segment; every point of it is
+    // within |t − Tp| of Tp, which bounds it then
+    const I jump = CGAL::max(lbSegSeg(Tp_, T_, P, Q), lbPointSeg(Tp_, P, Q) - inorm(isub(T_, Tp_)));
+    I best = imin(imin(lbPointSeg(F_, P, Q), lbPointSeg(Tp_, P, Q)), imin(imin(pointArc(P), pointArc(Q)), jump));
     const I s = -idot(pc, d) / qa;
     const IPoint v = isub({P.x + s * d.x, P.y + s * d.y}, C_);
     const I hd = inorm(v);
@@ -257,16 +260,30 @@ public:
     if (rho2 == 0) return "arc of zero radius";
     if (abs(Rational(t2 - rho2)) > Rational(rho2) * Rational(1, 1000000000) + Rational("1/1000000000000000000"))
       return "arc end is not on the arc's circle";
-    const ExprPoint C = ep(c), F = ep(f), T = ep(t);
-    const Expr rho = sqrt(ex(rho2));
-    ExprPoint B = sub(T, C);
-    const Expr lenB = sqrt(dot(B, B));
-    const ExprPoint Tp{C.x + B.x * rho / lenB, C.y + B.y * rho / lenB};
-    ExprPoint A = sub(F, C);
-    if (!ccw) std::swap(A, B);  // a cw arc from f to t is the ccw arc from t to f
     const bool full = (f == t);
+    // The arc in CORE's exact numbers, made only when some edge passes both filters: most arcs
+    // are decided on doubles and intervals, and building these square roots was most of their cost.
+    struct ExactArc {
+      ExprPoint C, F, T, A, B, Tp;
+      Expr rho, R;
+    };
+    std::optional<ExactArc> exactArc;
+    auto exact = [&]() -> const ExactArc& {
+      if (exactArc) return *exactArc;
+      ExactArc X;
+      X.C = ep(c), X.F = ep(f), X.T = ep(t);
+      X.rho = sqrt(ex(rho2));
+      X.B = sub(X.T, X.C);
+      const Expr lenB = sqrt(dot(X.B, X.B));
+      X.Tp = {X.C.x + X.B.x * X.rho / lenB, X.C.y + X.B.y * X.rho / lenB};
+      X.A = sub(X.F, X.C);
+      if (!ccw) std::swap(X.A, X.B);  // a cw arc from f to t is the ccw arc from t to f
+      X.R = ex(r_);
+      return exactArc.emplace(std::move(X));
+    };
     auto inRange = [&](const ExprPoint& v) {
       if (full) return true;
+      const ExprPoint &A = exactArc->A, &B = exactArc->B;
       const Expr ab = cross(A, B);
       if (ab > 0) return cross(A, v) >= 0 && cross(v, B) >= 0;
       if (ab < 0) return !(cross(B, v) > 0 && cross(v, A) > 0);
@@ -282,22 +299,22 @@ public:
     const double m = filter ? rd_ + 1e-7 * scale_ + std::abs(std::sqrt(t2.get_d()) - rr) +
                                   1e-12 * (rr + std::abs(cx) + std::abs(cy))
                             : 0;
-    const Expr R = ex(r_);
     std::optional<ArcFilter> intervals;
     if (filter && filtered_) intervals.emplace(f, t, c, rho2, ccw);
     const I RI = iv(r_);
     std::string bad;
     Expr found;  // the distance that was found below R (for the message)
     auto below = [&](const Expr& d) {
-      if (!(d < R)) return false;
+      if (!(d < exactArc->R)) return false;
       found = d;
       return true;
     };
     // the distance from P to the arc is below R (never a min of candidates: see segSegBelow)
     auto pointArcBelow = [&](const ExprPoint& P) {
-      const ExprPoint v = sub(P, C);
-      if (inRange(v)) return below(abs(sqrt(dot(v, v)) - rho));
-      return below(dist(P, F)) || below(dist(P, Tp));
+      const ExactArc& X = *exactArc;
+      const ExprPoint v = sub(P, X.C);
+      if (inRange(v)) return below(abs(sqrt(dot(v, v)) - X.rho));
+      return below(dist(P, X.F)) || below(dist(P, X.Tp));
     };
     const bool jump = t2 != rho2;  // else t is where the arc ends
     // An edge with an end at the arc's centre, as the two edges at the obstacle corner a sweep turns
@@ -339,6 +356,9 @@ public:
       }
       if (clearOfCornerEdge(e)) return;
       ++exactTests;
+      const ExactArc& X = exact();
+      const ExprPoint &C = X.C, &F = X.F, &T = X.T, &Tp = X.Tp;
+      const Expr &rho = X.rho, &R = X.R;
       const ExprPoint P = ep(*e.a), Q = ep(*e.b);
       // intersection of the segment with the circle inside the arc's range
       ExprPoint d = sub(Q, P), pc = sub(P, C);
