@@ -96,27 +96,11 @@ struct IPoint {
 };
 I iv(const Rational& q) { return I(CGAL::to_interval(q)); }
 IPoint ip(const Point& p) { return {iv(p.x), iv(p.y)}; }
-IPoint isub(const IPoint& a, const IPoint& b) { return {a.x - b.x, a.y - b.y}; }
-I icross(const IPoint& a, const IPoint& b) { return a.x * b.y - a.y * b.x; }
-I idot(const IPoint& a, const IPoint& b) { return a.x * b.x + a.y * b.y; }
-I inorm(const IPoint& a) { return CGAL::sqrt(CGAL::square(a.x) + CGAL::square(a.y)); }
-I imin(const I& a, const I& b) { return CGAL::min(a, b); }
 
 /// Three-valued truth: 0 no, 1 yes, 2 undecided on intervals.
 int tri(CGAL::Uncertain<bool> u) { return CGAL::is_certain(u) ? (CGAL::get_certain(u) ? 1 : 0) : 2; }
 int triAnd(int a, int b) { return (a == 0 || b == 0) ? 0 : (a == 1 && b == 1 ? 1 : 2); }
 int triNot(int a) { return a == 2 ? 2 : 1 - a; }
-
-/// ≤ the distance from p to segment ab (pointSegDistance); 0 when ab may be degenerate.
-I lbPointSeg(const IPoint& p, const IPoint& a, const IPoint& b) {
-  const IPoint ab = isub(b, a), ap = isub(p, a);
-  const I l2 = CGAL::square(ab.x) + CGAL::square(ab.y);
-  if (!CGAL::certainly(l2 > 0)) return I(0);
-  const I t = idot(ap, ab) / l2;
-  if (CGAL::certainly(t <= 0)) return inorm(ap);
-  if (CGAL::certainly(t >= 1)) return inorm(isub(p, b));
-  return CGAL::abs(icross(ab, ap)) / CGAL::sqrt(l2);  // the distance to the line: ≤ every branch
-}
 
 // The segment filter runs on unprotected intervals (Interval_nt_advanced) under one rounding-mode
 // guard per edge: the protected type switches the FPU mode at every operation, which was most of
@@ -129,6 +113,19 @@ IPointA toAdvanced(const IPoint& p) { return {IA(p.x.inf(), p.x.sup()), IA(p.y.i
 inline IPointA asub(const IPointA& a, const IPointA& b) { return {a.x - b.x, a.y - b.y}; }
 inline IA across(const IPointA& a, const IPointA& b) { return a.x * b.y - a.y * b.x; }
 inline IA adot(const IPointA& a, const IPointA& b) { return a.x * b.x + a.y * b.y; }
+inline IA anorm(const IPointA& a) { return CGAL::sqrt(adot(a, a)); }
+
+/// ≤ the distance from p to segment ab (pointSegDistance); 0 when ab may be degenerate. Call
+/// under CGAL::Protect_FPU_rounding<true>.
+IA lbPointSeg(const IPointA& p, const IPointA& a, const IPointA& b) {
+  const IPointA ab = asub(b, a), ap = asub(p, a);
+  const IA l2 = adot(ab, ab);
+  if (!CGAL::certainly(l2 > 0)) return IA(0);
+  const IA t = adot(ap, ab) / l2;
+  if (CGAL::certainly(t <= 0)) return anorm(ap);
+  if (CGAL::certainly(t >= 1)) return anorm(asub(p, b));
+  return CGAL::abs(across(ab, ap)) / CGAL::sqrt(l2);  // the distance to the line: ≤ every branch
+}
 
 /// ≤ the squared distance from p to segment ab; 0 when ab may be degenerate. Squared, so that
 /// points given as doubles give exact bounds wherever the products are exact in doubles (a grid's
@@ -166,61 +163,66 @@ auto lbSegSegBy(const Pt& a, const Pt& b, const Pt& c, const Pt& d, PointSeg poi
 /// ≤ the squared distance between segments ab and cd. Call under CGAL::Protect_FPU_rounding<true>.
 IA lbSegSeg2(const IPointA& a, const IPointA& b, const IPointA& c, const IPointA& d) { return lbSegSegBy(a, b, c, d, lbPointSeg2); }
 
-/// ≤ the distance between segments ab and cd; 0 when they may cross.
-I lbSegSeg(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d) { return lbSegSegBy(a, b, c, d, lbPointSeg); }
+/// ≤ the distance between segments ab and cd; 0 when they may cross. Call under
+/// CGAL::Protect_FPU_rounding<true>.
+IA lbSegSeg(const IPointA& a, const IPointA& b, const IPointA& c, const IPointA& d) { return lbSegSegBy(a, b, c, d, lbPointSeg); }
 
-/// The arc of Checker::arc on intervals: ≤ the distance the exact code finds to edge pq.
+/// The arc of Checker::arc on intervals: ≤ the distance the exact code finds to edge pq. On
+/// unprotected intervals, as the segment filter: construct it and call lowerBound under
+/// CGAL::Protect_FPU_rounding<true> (one switch of the rounding mode per edge, not per operation).
 class ArcFilter {
 public:
   ArcFilter(const Point& f, const Point& t, const Point& c, const Rational& rho2, bool ccw)
-      : C_(ip(c)), F_(ip(f)), T_(ip(t)), rho2_(iv(rho2)), rho_(CGAL::sqrt(rho2_)), full_(f == t) {
-    B_ = isub(T_, C_);
-    const I lenB = inorm(B_);
+      : C_(toAdvanced(ip(c))), F_(toAdvanced(ip(f))), T_(toAdvanced(ip(t))), rho2_(advanced(iv(rho2))), rho_(CGAL::sqrt(rho2_)),
+        full_(f == t) {
+    B_ = asub(T_, C_);
+    const IA lenB = anorm(B_);
     Tp_ = {C_.x + B_.x * rho_ / lenB, C_.y + B_.y * rho_ / lenB};
-    A_ = isub(F_, C_);
+    A_ = asub(F_, C_);
     if (!ccw) std::swap(A_, B_);
+    jumpLength_ = anorm(asub(T_, Tp_));
   }
-  I lowerBound(const Point& p, const Point& q) const {
-    const IPoint P = ip(p), Q = ip(q), d = isub(Q, P), pc = isub(P, C_);
-    const I qa = CGAL::square(d.x) + CGAL::square(d.y), qb = 2 * idot(pc, d),
-            qc = CGAL::square(pc.x) + CGAL::square(pc.y) - rho2_;
-    if (!CGAL::certainly(qa > 0)) return I(0);
-    const I disc = CGAL::square(qb) - 4 * qa * qc;
+  IA lowerBound(const IPointA& P, const IPointA& Q) const {
+    const IPointA d = asub(Q, P), pc = asub(P, C_);
+    const IA qa = adot(d, d), qb = 2 * adot(pc, d), qc = adot(pc, pc) - rho2_;
+    if (!CGAL::certainly(qa > 0)) return IA(0);
+    const IA disc = CGAL::square(qb) - 4 * qa * qc;
     if (!CGAL::certainly(disc < 0)) {
-      const I sq = CGAL::sqrt(disc);
-      for (const I& s : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
+      const IA sq = CGAL::sqrt(disc);
+      for (const IA& s : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
         if (CGAL::certainly(s < 0) || CGAL::certainly(s > 1)) continue;
-        if (inRange(isub({P.x + s * d.x, P.y + s * d.y}, C_)) != 0) return I(0);  // may meet the arc
+        if (inRange(asub({P.x + s * d.x, P.y + s * d.y}, C_)) != 0) return IA(0);  // may meet the arc
       }
     }
     // the jump from Tp to t: where t lies (almost) on the circle it is (almost) a point, and the
     // orientation tests of lbSegSeg cannot decide a degenerate segment; every point of it is
     // within |t − Tp| of Tp, which bounds it then
-    const I jump = CGAL::max(lbSegSeg(Tp_, T_, P, Q), lbPointSeg(Tp_, P, Q) - inorm(isub(T_, Tp_)));
-    I best = imin(imin(lbPointSeg(F_, P, Q), lbPointSeg(Tp_, P, Q)), imin(imin(pointArc(P), pointArc(Q)), jump));
-    const I s = -idot(pc, d) / qa;
-    const IPoint v = isub({P.x + s * d.x, P.y + s * d.y}, C_);
-    const I hd = inorm(v);
-    if (triAnd(triAnd(tri(s > 0), tri(s < 1)), triAnd(tri(hd >= rho_), inRange(v))) != 0) best = imin(best, hd - rho_);
+    const IA jump = CGAL::max(lbSegSeg(Tp_, T_, P, Q), lbPointSeg(Tp_, P, Q) - jumpLength_);
+    IA best = CGAL::min(CGAL::min(lbPointSeg(F_, P, Q), lbPointSeg(Tp_, P, Q)), CGAL::min(CGAL::min(pointArc(P), pointArc(Q)), jump));
+    const IA s = -adot(pc, d) / qa;
+    const IPointA v = asub({P.x + s * d.x, P.y + s * d.y}, C_);
+    const IA hd = anorm(v);
+    if (triAnd(triAnd(tri(s > 0), tri(s < 1)), triAnd(tri(hd >= rho_), inRange(v))) != 0) best = CGAL::min(best, hd - rho_);
     return best;
   }
 
 private:
-  int inRange(const IPoint& v) const {
+  static IA advanced(const I& x) { return IA(x.inf(), x.sup()); }
+  int inRange(const IPointA& v) const {
     if (full_) return 1;
-    const I ab = icross(A_, B_);
-    if (CGAL::certainly(ab > 0)) return triAnd(tri(icross(A_, v) >= 0), tri(icross(v, B_) >= 0));
-    if (CGAL::certainly(ab < 0)) return triNot(triAnd(tri(icross(B_, v) > 0), tri(icross(v, A_) > 0)));
+    const IA ab = across(A_, B_);
+    if (CGAL::certainly(ab > 0)) return triAnd(tri(across(A_, v) >= 0), tri(across(v, B_) >= 0));
+    if (CGAL::certainly(ab < 0)) return triNot(triAnd(tri(across(B_, v) > 0), tri(across(v, A_) > 0)));
     return 2;
   }
   /// ≤ pointArcDist: the distance to the circle is ≤ the distance to either end.
-  I pointArc(const IPoint& P) const {
-    const IPoint v = isub(P, C_);
-    if (inRange(v) != 0) return CGAL::abs(inorm(v) - rho_);
-    return imin(inorm(isub(P, F_)), inorm(isub(P, Tp_)));
+  IA pointArc(const IPointA& P) const {
+    const IPointA v = asub(P, C_);
+    if (inRange(v) != 0) return CGAL::abs(anorm(v) - rho_);
+    return CGAL::min(anorm(asub(P, F_)), anorm(asub(P, Tp_)));
   }
-  IPoint C_, F_, T_, A_, B_, Tp_;
-  I rho2_, rho_;
+  IPointA C_, F_, T_, A_, B_, Tp_;
+  IA rho2_, rho_, jumpLength_;
   bool full_;
 };
 
@@ -300,8 +302,15 @@ public:
                                   1e-12 * (rr + std::abs(cx) + std::abs(cy))
                             : 0;
     std::optional<ArcFilter> intervals;
-    if (filter && filtered_) intervals.emplace(f, t, c, rho2, ccw);
-    const I RI = iv(r_);
+    if (filter && filtered_) {
+      CGAL::Protect_FPU_rounding<true> upward;
+      intervals.emplace(f, t, c, rho2, ccw);
+    }
+    const IA RI = [this] {
+      const I q = iv(r_);
+      return IA(q.inf(), q.sup());
+    }();
+    const detail::IndexedEdge* first = index_.edges().data();
     std::string bad;
     Expr found;  // the distance that was found below R (for the message)
     auto below = [&](const Expr& d) {
@@ -352,7 +361,11 @@ public:
         const double dc = detail::pointSegDist(cx, cy, e.ax, e.ay, e.bx, e.by);
         const double far = std::max(std::hypot(e.ax - cx, e.ay - cy), std::hypot(e.bx - cx, e.by - cy));
         if (dc > rr + m || far < rr - m) return;
-        if (intervals && CGAL::certainly(intervals->lowerBound(*e.a, *e.b) >= RI)) return;
+        if (intervals) {
+          const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - first));
+          CGAL::Protect_FPU_rounding<true> upward;
+          if (CGAL::certainly(intervals->lowerBound(ea, eb) >= RI)) return;
+        }
       }
       if (clearOfCornerEdge(e)) return;
       ++exactTests;
