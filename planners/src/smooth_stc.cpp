@@ -68,6 +68,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <thread>
 
 namespace coverkit::planners {
 
@@ -139,7 +140,9 @@ public:
   void tour(const std::vector<CellIndex>& walk, Path& path) {
     for (const CellIndex& c : walk) inTree_[megaIndex(c.col / 2, c.row / 2)] = 1;
     const std::vector<Opening> open = openings(walk);
-    insert(walk, open, contours(walk, open), path);
+    std::vector<std::uint8_t> innerClear;
+    const std::vector<CSpace::Sweep> sweeps = contours(walk, open, innerClear);
+    insert(walk, open, sweeps, innerClear, path);
   }
 
   void report(Plan& plan) const {
@@ -197,7 +200,11 @@ private:
     return out;
   }
 
-  std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open) {
+  /// The sweeps of the openings; offline also `innerClear`: whether each sweep's pieces other than
+  /// its first and last (which insert() trims to the path) keep the disc clear, checked exactly on
+  /// ctx.threads threads (insert() checks the rest; empty online, where insert() checks all).
+  std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open,
+                                      std::vector<std::uint8_t>& innerClear) {
     std::vector<CSpace::SweepRequest> requests;
     requests.reserve(open.size());
     for (const Opening& o : open) requests.push_back(requestOf(cells_, walk, o));
@@ -205,7 +212,10 @@ private:
       // Offline: each sweep clipped from the C-obstacle pieces near its rectangle
       // (CSpace::localSweeps): no C-space of the whole map, a cost linear in the sweeps.
       const Rational r = ctx_.problem.robots.at(0).radius;
-      return CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads);
+      std::vector<CSpace::Sweep> out =
+          CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads);
+      innerClear = checkInner(out);
+      return out;
     }
     // Online (Algorithm 2, step 2.4.1): the robot reaches each opening in walk order, senses its
     // mega-cell and the leaf, and each further mega-cell of a run from the one before as the
@@ -233,6 +243,27 @@ private:
     return out;
   }
 
+  /// For each sweep, whether its pieces between the first and the last are exactly clear: the
+  /// sweeps in contiguous blocks, one per thread, each thread with its own checker. The verdicts
+  /// are the exact test's, whatever the thread count.
+  std::vector<std::uint8_t> checkInner(const std::vector<CSpace::Sweep>& sweeps) const {
+    std::vector<std::uint8_t> ok(sweeps.size(), 1);
+    const unsigned cores = ctx_.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : ctx_.threads;
+    const std::size_t blocks = std::min<std::size_t>(cores, std::max<std::size_t>(1, sweeps.size() / 16));
+    auto run = [&](std::size_t b) {
+      ClearanceChecker check(ctx_.problem.workspace, ctx_.problem.robots.at(0).radius);
+      for (std::size_t j = sweeps.size() * b / blocks; j < sweeps.size() * (b + 1) / blocks; ++j) {
+        const std::vector<PathSegment>& p = sweeps[j].pieces;
+        for (std::size_t i = 1; ok[j] && i + 1 < p.size(); ++i) ok[j] = pieceClear(check, p[i]);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t b = 1; b < blocks; ++b) pool.emplace_back(run, b);
+    run(0);
+    for (std::thread& t : pool) t.join();
+    return ok;
+  }
+
   static std::array<int, 4> runKey(const Opening& o) {
     const int right = (o.dir + 3) & 3, vertical = graph::kDx[right] == 0;
     const int at = vertical ? o.leafRow : o.leafCol, end = at + (o.run - 1) * (vertical ? graph::kDy[right] : graph::kDx[right]);
@@ -244,7 +275,7 @@ private:
   /// Each opening's move is part of one axis-parallel segment of the path (runs are merged, or cut
   /// near obstacles); the sweep replaces the part of it between its entry and exit.
   void insert(const std::vector<CellIndex>& walk, const std::vector<Opening>& open, const std::vector<CSpace::Sweep>& sweeps,
-              Path& path) {
+              const std::vector<std::uint8_t>& innerClear, Path& path) {
     std::vector<PathSegment> out;
     out.reserve(path.segments.size());
     std::size_t k = 0;  // next segment of `path` not yet copied
@@ -291,7 +322,10 @@ private:
       pieces.front().from = pe;
       pieces.back().to = pw;
       bool ok = alongOf(pe) <= alongOf(pw);
-      for (std::size_t i = 0; ok && i < pieces.size(); ++i) ok = clear(pieces[i]);
+      const bool inner = !innerClear.empty();  // the pieces between the first and the last are checked
+      if (inner) ok = ok && innerClear[j];
+      for (std::size_t i = 0; ok && i < pieces.size(); ++i)
+        if (!inner || i == 0 || i + 1 == pieces.size()) ok = clear(pieces[i]);
       if (!ok) {
         ++rejected_;
         continue;
