@@ -265,15 +265,19 @@ TEST(Concurrency, CSpaceOffsetsAndValidatorRangesOnThreadsGiveTheOneThreadResult
 }
 
 // Smooth-STC's sweeps on strips of requests, one per thread (CSpace::localSweeps, each strip with
-// its own exact numbers): the plan with `threads` 3 is the one-thread plan, byte for byte.
+// its own exact numbers), and the exact checks of their inner pieces in blocks of at least 16
+// sweeps, one per thread (each with its own checker): the plan with `threads` 3 is the one-thread
+// plan, byte for byte.
 TEST(Concurrency, SmoothStcSweepsOnThreadsGiveTheOneThreadPlan) {
   Problem p;
   p.workspace = testing_helpers::mixedWorld(5, 12, 8);
   p.robots.push_back({Rational(1, 4), std::nullopt});
   planners::PlanningContext ctx = planners::makeContext(p);
+  double sweeps = 0;
   auto planText = [&](unsigned threads) {
     ctx.threads = threads;
     const Plan plan = planners::runPlanner("smooth_stc", ctx, {});
+    sweeps = plan.statistics.at("sweeps");
     std::ostringstream out;
     out.precision(17);
     for (const PathSegment& s : plan.paths.at(0).segments) out << s.from.x << " " << s.from.y << " " << s.to.x << " " << s.to.y << "\n";
@@ -281,5 +285,6 @@ TEST(Concurrency, SmoothStcSweepsOnThreadsGiveTheOneThreadPlan) {
   };
   const std::string one = planText(1);
   EXPECT_GT(one.size(), 1000u);
+  EXPECT_GE(sweeps, 48) << "too few sweeps for three blocks of checks";
   EXPECT_EQ(planText(3), one);
 }
