@@ -578,37 +578,55 @@ PointD pointAlong(const PathSegment& p, double l) {
 void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
   const double r = ctx.problem.robots.at(0).radius.get_d(), w = r / 16, tiny = 1e-9 * r;
   auto clear = [&](const PathSegment& p) { return pieceClear(check, p); };
-  std::vector<PathSegment>& seg = path.segments;
-  std::size_t cut = 0, left = 0;
-  for (std::size_t j = 0; j + 1 < seg.size(); ++j) {
-    if (seg[j].length() < tiny || seg[j + 1].length() < tiny) continue;
-    const PointD u = headingOf(seg[j], true), v = headingOf(seg[j + 1], false);
-    if (u.x * v.x + u.y * v.y > std::cos(175.0 * M_PI / 180)) continue;
+  // One pass, linear in the path: `out` holds the pieces up to the current one (out.back()), `in`
+  // the rest from `i`; a cut replaces the tail of `out` from the piece where it starts, and the
+  // pieces of `in` up to the one where it ends, by the two shortened pieces and the cut.
+  const std::vector<PathSegment>& in = path.segments;
+  std::vector<PathSegment> out;
+  out.reserve(in.size());
+  std::size_t cut = 0, left = 0, i = 0;
+  if (!in.empty()) out.push_back(in[i++]);
+  while (i < in.size()) {
+    const PathSegment& prev = out.back();
+    const PathSegment& next = in[i];
+    if (prev.length() < tiny || next.length() < tiny) {
+      out.push_back(in[i++]);
+      continue;
+    }
+    const PointD u = headingOf(prev, true), v = headingOf(next, false);
+    if (u.x * v.x + u.y * v.y > std::cos(175.0 * M_PI / 180)) {
+      out.push_back(in[i++]);
+      continue;
+    }
     bool done = false;
     for (double s = w; s <= 4 * r && !done; s *= 2) {
-      // back from the tip along seg[j], seg[j-1], …; forward along seg[j+1], …
-      std::ptrdiff_t k = static_cast<std::ptrdiff_t>(j);
+      // back from the tip along out.back(), …; forward along in[i], …
+      std::ptrdiff_t k = static_cast<std::ptrdiff_t>(out.size()) - 1;
       double back = s;
-      while (k >= 0 && seg[static_cast<std::size_t>(k)].length() <= back) back -= seg[static_cast<std::size_t>(k--)].length();
-      std::size_t m = j + 1;
+      while (k >= 0 && out[static_cast<std::size_t>(k)].length() <= back) back -= out[static_cast<std::size_t>(k--)].length();
+      std::size_t m = i;
       double fwd = s;
-      while (m < seg.size() && seg[m].length() <= fwd) fwd -= seg[m++].length();
-      if (k < 0 || m >= seg.size()) break;
-      const PathSegment& pk = seg[static_cast<std::size_t>(k)];
-      const PointD A = pointAlong(pk, pk.length() - back), B = pointAlong(seg[m], fwd);
+      while (m < in.size() && in[m].length() <= fwd) fwd -= in[m++].length();
+      if (k < 0 || m >= in.size()) break;
+      const PathSegment& pk = out[static_cast<std::size_t>(k)];
+      const PointD A = pointAlong(pk, pk.length() - back), B = pointAlong(in[m], fwd);
       if (std::hypot(A.x - B.x, A.y - B.y) < w) continue;
-      PathSegment before = pk, after = seg[m];
+      PathSegment before = pk, after = in[m];
       before.to = A;
       after.from = B;
       const PathSegment across = PathSegment::line(A, B);
       if (!clear(before) || !clear(across) || !clear(after)) continue;
-      seg.erase(seg.begin() + k, seg.begin() + static_cast<std::ptrdiff_t>(m) + 1);
-      seg.insert(seg.begin() + k, {before, across, after});
-      j = static_cast<std::size_t>(k) + 1;  // go on after the cut
+      out.resize(static_cast<std::size_t>(k));
+      out.push_back(before);
+      out.push_back(across);
+      out.push_back(after);
+      i = m + 1;  // go on after the cut
       done = true;
     }
     (done ? cut : left) += 1;
+    if (!done) out.push_back(in[i++]);
   }
+  path.segments.swap(out);
   plan.statistics["tips_cut"] = static_cast<double>(cut);
   plan.statistics["tips_left"] = static_cast<double>(left);
 }
