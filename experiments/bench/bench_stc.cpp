@@ -85,6 +85,8 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
     stcSeconds = std::chrono::duration<double>(t2 - t1).count();
     for (const auto& [phase, seconds] : smooth.timings) state.counters["t_" + phase] = seconds;
     state.counters["sweeps"] = smooth.statistics["sweeps"];
+    state.counters["traced"] = smooth.statistics["sweeps_traced"];
+    state.counters["pockets"] = smooth.statistics["pockets_joined"];
     benchmark::DoNotOptimize(smooth);
     benchmark::DoNotOptimize(stc);
   }

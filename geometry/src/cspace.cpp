@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_triangulation_decomposition_2.h>
 #include <CGAL/approximated_offset_2.h>
 
+#include "axis_sweep.h"
 #include "circle_segment_area.h"
 #include "cspace_access.h"
 #include "parallel.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -1194,10 +1196,11 @@ std::vector<CSpace::Sweep> CSpace::sweeps(const std::vector<SweepRequest>& reque
 }
 
 std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rational& radius, const std::vector<SweepRequest>& requests,
-                                               double relativeEps, unsigned threads) {
+                                               double relativeEps, unsigned threads, bool trace) {
   std::vector<Sweep> out(requests.size());
   if (requests.empty()) return out;
-  checkSweepInput(w, radius);
+  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
+  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
   std::vector<SweepBox> boxes;
   std::vector<double> sides;
   for (const SweepRequest& q : requests) {
@@ -1208,13 +1211,28 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
   std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2), sides.end());
   const double cell = sides[sides.size() / 2];
   const double eps = epsilonOf(w, relativeEps);
-  // Requests in strips along x, one strip per thread; each strip builds its own obstacles from its
-  // own exact numbers (threads share none). The sets are exact, so the sweeps do not depend on
-  // the strips.
+  // Requests in strips along x, one strip per thread. The direct trace first (its edges shared
+  // read-only by the strips); the requests it leaves get the exact Boolean operations, each strip
+  // building its own obstacles from its own exact numbers (threads share none). Both ways give
+  // each request's sweep whatever the strips.
   std::vector<std::size_t> order(requests.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  auto centre = [&](std::size_t i) { return Rational(boxes[i].x0 + boxes[i].x1).get_d(); };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return centre(i) < centre(j); });
+  std::vector<double> centre(requests.size());
+  for (std::size_t i = 0; i < centre.size(); ++i) centre[i] = Rational(boxes[i].x0 + boxes[i].x1).get_d();
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return centre[i] < centre[j]; });
+  if (trace) {
+    detail::AxisEdges edges(w, cell);
+    edges.addAll();
+    const double rd = toDouble(radius);
+    const std::size_t strips = std::min<std::size_t>(detail::threadCount(threads), order.size());
+    detail::parallelFor(strips, threads, [&](std::size_t k) {
+      for (std::size_t j = order.size() * k / strips; j < order.size() * (k + 1) / strips; ++j)
+        out[order[j]].traced = detail::axisSweep(edges, rd, requests[order[j]], out[order[j]]);
+    });
+    order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return out[i].traced; }), order.end());
+    if (order.empty()) return out;
+  }
+  checkWorkspace(w);  // CGAL's preconditions are not input validation
   const std::size_t strips = std::min<std::size_t>(detail::threadCount(threads), order.size());
   detail::parallelFor(strips, threads, [&](std::size_t k) {
     const std::size_t from = order.size() * k / strips, to = order.size() * (k + 1) / strips;
@@ -1232,33 +1250,61 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
 }
 
 struct OnlineSweeper::Impl {
-  Impl(const Workspace& w, const Rational& radius, double cell, double relativeEps)
-      : workspace(w), obstacles(w, radius, epsilonOf(w, relativeEps), boxOfWorkspace(w), cell) {}
+  Impl(const Workspace& w, const Rational& radius, double cell, double relativeEps, bool trace)
+      : workspace(w), radius(radius), cell(cell), eps(epsilonOf(w, relativeEps)), rd(toDouble(radius)) {
+    if (trace) edges.emplace(w, cell);
+  }
   static BoxD boxOfWorkspace(const Workspace& w) {
     const Box b = w.bbox();
     return {b.xmin.get_d(), b.ymin.get_d(), b.xmax.get_d(), b.ymax.get_d()};
   }
+  /// The exact pieces of the rings added so far, made when a request first needs them.
+  LocalObstacles& exact() {
+    if (!obstacles) {
+      obstacles.emplace(workspace, radius, eps, boxOfWorkspace(workspace), cell);
+      for (std::size_t g : regions) obstacles->addRegion(g);
+      for (const auto& [g, k] : rings) obstacles->addRing(g, k);
+    }
+    return *obstacles;
+  }
   const Workspace& workspace;   ///< the rings' source (the caller's); only those added are read
-  LocalObstacles obstacles;
+  Rational radius;
+  double cell, eps, rd;
+  std::vector<std::size_t> regions;                    ///< added, in order
+  std::vector<std::pair<std::size_t, std::size_t>> rings;
+  std::optional<LocalObstacles> obstacles;
+  std::optional<detail::AxisEdges> edges;   ///< the added rings' edges for the direct trace
 };
 
-OnlineSweeper::OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps) {
+OnlineSweeper::OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps, bool trace) {
   if (!(cell > 0)) throw std::invalid_argument("OnlineSweeper: the bucket size must be > 0");
   checkSweepInput(w, radius);
-  impl_ = std::make_unique<Impl>(w, radius, cell, relativeEps);
+  impl_ = std::make_unique<Impl>(w, radius, cell, relativeEps, trace);
 }
 OnlineSweeper::~OnlineSweeper() = default;
 
-void OnlineSweeper::addRegion(std::size_t region) { impl_->obstacles.addRegion(region); }
+void OnlineSweeper::addRegion(std::size_t region) {
+  if (region >= impl_->workspace.regions.size()) throw std::invalid_argument("OnlineSweeper::addRegion: no such region");
+  impl_->regions.push_back(region);
+  if (impl_->obstacles) impl_->obstacles->addRegion(region);
+}
 
 void OnlineSweeper::addRing(std::size_t region, std::size_t ring) {
   if (region >= impl_->workspace.regions.size() || ring > impl_->workspace.regions[region].holes.size())
     throw std::invalid_argument("OnlineSweeper::addRing: no such ring");
-  impl_->obstacles.addRing(region, ring);
+  impl_->rings.emplace_back(region, ring);
+  if (impl_->obstacles) impl_->obstacles->addRing(region, ring);
+  if (impl_->edges) impl_->edges->addRing(region, ring);
 }
 
 CSpace::Sweep OnlineSweeper::sweep(const CSpace::SweepRequest& q) const {
-  return sweepOf(impl_->obstacles.freeIn(checkedBox(q, "OnlineSweeper::sweep")), q);
+  const SweepBox box = checkedBox(q, "OnlineSweeper::sweep");
+  CSpace::Sweep s;
+  if (impl_->edges && detail::axisSweep(*impl_->edges, impl_->rd, q, s)) {
+    s.traced = true;
+    return s;
+  }
+  return sweepOf(impl_->exact().freeIn(box), q);
 }
 
 }  // namespace coverkit

@@ -89,6 +89,9 @@ Rational decimalFromDouble(double v) {
 }
 
 double toDouble(const Rational& q) {
+  // a dyadic number of at most 53 significant bits is a double: mpq_get_d gives it exactly
+  const mpz_srcptr num = q.get_num_mpz_t(), den = q.get_den_mpz_t();
+  if (mpz_popcount(den) == 1 && mpz_sizeinbase(num, 2) <= 53 && mpz_sizeinbase(den, 2) < 1000) return q.get_d();
   // mpq_get_d truncates; correct to nearest by comparing the neighbours exactly.
   double d = q.get_d();
   double up = std::nextafter(d, HUGE_VAL), dn = std::nextafter(d, -HUGE_VAL);

@@ -509,6 +509,7 @@ ClearanceChecker::ClearanceChecker(const Workspace& w, const Rational& r, bool f
     : impl_(std::make_unique<Impl>(w, r, filtered)) {}
 ClearanceChecker::~ClearanceChecker() = default;
 bool ClearanceChecker::clear(const Point& a, const Point& b) { return impl_->checker.segment(a, b).empty(); }
+bool ClearanceChecker::clear(PointD a, PointD b) { return impl_->checker.segment(a, b).empty(); }
 bool ClearanceChecker::clearArc(const Point& from, const Point& to, const Point& center, bool ccw) {
   return impl_->checker.arc(from, to, center, ccw).empty();
 }

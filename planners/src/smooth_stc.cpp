@@ -66,7 +66,6 @@
 #include <cmath>
 #include <array>
 #include <functional>
-#include <map>
 #include <set>
 #include <thread>
 
@@ -117,7 +116,7 @@ Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
 
 /// A line or arc of the path, read exactly as the validator reads it, keeps the disc clear.
 bool pieceClear(ClearanceChecker& check, const PathSegment& p) {
-  return p.kind == PathSegment::Kind::kLine ? check.clear(exactOf(p.from), exactOf(p.to))
+  return p.kind == PathSegment::Kind::kLine ? check.clear(p.from, p.to)
                                             : check.clearArc(exactOf(p.from), exactOf(p.to), exactOf(p.center), p.ccw);
 }
 
@@ -152,6 +151,7 @@ public:
     plan.statistics["sweeps_unreached"] = static_cast<double>(unreached_);
     plan.statistics["sweeps_shared"] = static_cast<double>(shared_);
     plan.statistics["sweeps_rejected"] = static_cast<double>(rejected_);
+    plan.statistics["sweeps_traced"] = static_cast<double>(traced_);
     plan.statistics["partial_mega_cells_swept"] = static_cast<double>(leaves);
     plan.statistics["arcs"] = static_cast<double>(arcs_);
     plan.statistics["pockets_joined"] = static_cast<double>(pocketsJoined_);
@@ -283,6 +283,7 @@ private:
     for (std::size_t j = 0; j < open.size(); ++j) {
       const CSpace::Sweep& s = sweeps[j];
       const Opening& o = open[j];
+      traced_ += s.traced;
       if (!s.reached || s.pieces.empty()) {
         ++unreached_;
         continue;
@@ -423,35 +424,60 @@ private:
   std::vector<std::uint8_t> inTree_, swept_;
   std::set<std::array<int, 4>> runsDone_;
   std::size_t inserted_ = 0, rejected_ = 0, unreached_ = 0, shared_ = 0, arcs_ = 0, pocketsJoined_ = 0, pocketsLeft_ = 0;
+  std::size_t traced_ = 0;  ///< sweeps (of any outcome) made by the direct trace
 };
 
 /// Segments by bucket (side 2r), for "does anything pass within r of this point" in doubles.
 class SegmentBuckets {
 public:
-  SegmentBuckets(const Path& path, double r) : r_(r), cell_(2 * r) {
+  /// A dense grid over the path's box (cells of 2r, coarser where that would exceed about 16
+  /// million), pieces listed per cell in two passes (count, then fill): linear in the entries.
+  SegmentBuckets(const Path& path, double r) : r_(r) {
+    std::vector<BoxD> boxes(path.segments.size());
+    BoxD all{0, 0, 0, 0};
     for (std::size_t i = 0; i < path.segments.size(); ++i) {
       const PathSegment& s = path.segments[i];
-      double x0 = std::min(s.from.x, s.to.x), x1 = std::max(s.from.x, s.to.x), y0 = std::min(s.from.y, s.to.y),
-             y1 = std::max(s.from.y, s.to.y);
+      BoxD b{std::min(s.from.x, s.to.x), std::min(s.from.y, s.to.y), std::max(s.from.x, s.to.x), std::max(s.from.y, s.to.y)};
       if (s.kind == PathSegment::Kind::kArc) {
         const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
-        x0 = s.center.x - rho, x1 = s.center.x + rho, y0 = s.center.y - rho, y1 = s.center.y + rho;
+        b = {s.center.x - rho, s.center.y - rho, s.center.x + rho, s.center.y + rho};
       }
-      for (long by = key(y0 - r); by <= key(y1 + r); ++by)
-        for (long bx = key(x0 - r); bx <= key(x1 + r); ++bx) buckets_[{bx, by}].push_back(i);
+      const double reach = r * (1 + 1e-6);  // beyond covered()'s limit of r (1 + 1e-9): no bucket edge decides
+      b = {b.xmin - reach, b.ymin - reach, b.xmax + reach, b.ymax + reach};
+      boxes[i] = b;
+      all = i == 0 ? b : BoxD{std::min(all.xmin, b.xmin), std::min(all.ymin, b.ymin), std::max(all.xmax, b.xmax), std::max(all.ymax, b.ymax)};
     }
+    constexpr double kMaxCells = 16.0 * 1024 * 1024;
+    const double w = all.xmax - all.xmin, h = all.ymax - all.ymin;
+    cell_ = std::max({2 * r, std::sqrt(w * h / kMaxCells), std::max(w, h) / kMaxCells, 1e-300});
+    x0_ = all.xmin, y0_ = all.ymin;
+    nx_ = static_cast<long>(w / cell_) + 1, ny_ = static_cast<long>(h / cell_) + 1;
+    start_.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+    auto each = [&](const BoxD& b, auto&& f) {
+      for (long by = key(b.ymin, y0_, ny_); by <= key(b.ymax, y0_, ny_); ++by)
+        for (long bx = key(b.xmin, x0_, nx_); bx <= key(b.xmax, x0_, nx_); ++bx) f(static_cast<std::size_t>(by * nx_ + bx));
+    };
+    for (const BoxD& b : boxes) each(b, [&](std::size_t c) { ++start_[c + 1]; });
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    pieces_.resize(start_.back());
+    for (std::size_t i = 0; i < boxes.size(); ++i) each(boxes[i], [&](std::size_t c) { pieces_[fill[c]++] = i; });
   }
   bool covered(const Path& path, PointD w) const {
-    auto it = buckets_.find({key(w.x), key(w.y)});
-    if (it == buckets_.end()) return false;
+    if (!(w.x >= x0_ && w.y >= y0_) || pieces_.empty()) return false;
+    const long bx = static_cast<long>((w.x - x0_) / cell_), by = static_cast<long>((w.y - y0_) / cell_);
+    if (bx >= nx_ || by >= ny_) return false;
+    const std::size_t c = static_cast<std::size_t>(by * nx_ + bx);
     const double limit = r_ * (1 + 1e-9);
-    for (std::size_t i : it->second)
-      if (distance(path.segments[i], w) <= limit) return true;
+    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k)
+      if (distance(path.segments[pieces_[k]], w) <= limit) return true;
     return false;
   }
 
 private:
-  long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+  long key(double v, double origin, long n) const {
+    return std::min(n - 1, std::max(0L, static_cast<long>((v - origin) / cell_)));
+  }
   static double distance(const PathSegment& s, PointD p) {
     if (s.kind == PathSegment::Kind::kLine) {
       const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y, len2 = dx * dx + dy * dy;
@@ -471,8 +497,9 @@ private:
     if (inside) return std::abs(std::hypot(p.x - s.center.x, p.y - s.center.y) - rho);
     return std::min(std::hypot(p.x - s.from.x, p.y - s.from.y), std::hypot(p.x - s.to.x, p.y - s.to.y));
   }
-  double r_, cell_;
-  std::map<std::pair<long, long>, std::vector<std::size_t>> buckets_;
+  double r_, cell_ = 1, x0_ = 0, y0_ = 0;
+  long nx_ = 1, ny_ = 1;
+  std::vector<std::size_t> start_, pieces_;  ///< the pieces of cell c: pieces_[start_[c] .. start_[c + 1])
 };
 
 /// Fills the outer corners of right-angle turns that nothing sweeps. At a turn at P from direction
@@ -583,19 +610,26 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
   // pieces of `in` up to the one where it ends, by the two shortened pieces and the cut.
   const std::vector<PathSegment>& in = path.segments;
   std::vector<PathSegment> out;
+  std::vector<double> inLen(in.size()), outLen;  // the pieces' lengths, computed once
+  for (std::size_t j = 0; j < in.size(); ++j) inLen[j] = in[j].length();
   out.reserve(in.size());
+  outLen.reserve(in.size());
   std::size_t cut = 0, left = 0, i = 0;
-  if (!in.empty()) out.push_back(in[i++]);
+  auto take = [&](std::size_t j) {
+    out.push_back(in[j]);
+    outLen.push_back(inLen[j]);
+  };
+  if (!in.empty()) take(i++);
   while (i < in.size()) {
     const PathSegment& prev = out.back();
     const PathSegment& next = in[i];
-    if (prev.length() < tiny || next.length() < tiny) {
-      out.push_back(in[i++]);
+    if (outLen.back() < tiny || inLen[i] < tiny) {
+      take(i++);
       continue;
     }
     const PointD u = headingOf(prev, true), v = headingOf(next, false);
     if (u.x * v.x + u.y * v.y > std::cos(175.0 * M_PI / 180)) {
-      out.push_back(in[i++]);
+      take(i++);
       continue;
     }
     bool done = false;
@@ -603,13 +637,13 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
       // back from the tip along out.back(), …; forward along in[i], …
       std::ptrdiff_t k = static_cast<std::ptrdiff_t>(out.size()) - 1;
       double back = s;
-      while (k >= 0 && out[static_cast<std::size_t>(k)].length() <= back) back -= out[static_cast<std::size_t>(k--)].length();
+      while (k >= 0 && outLen[static_cast<std::size_t>(k)] <= back) back -= outLen[static_cast<std::size_t>(k--)];
       std::size_t m = i;
       double fwd = s;
-      while (m < in.size() && in[m].length() <= fwd) fwd -= in[m++].length();
+      while (m < in.size() && inLen[m] <= fwd) fwd -= inLen[m++];
       if (k < 0 || m >= in.size()) break;
       const PathSegment& pk = out[static_cast<std::size_t>(k)];
-      const PointD A = pointAlong(pk, pk.length() - back), B = pointAlong(in[m], fwd);
+      const PointD A = pointAlong(pk, outLen[static_cast<std::size_t>(k)] - back), B = pointAlong(in[m], fwd);
       if (std::hypot(A.x - B.x, A.y - B.y) < w) continue;
       PathSegment before = pk, after = in[m];
       before.to = A;
@@ -617,14 +651,16 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
       const PathSegment across = PathSegment::line(A, B);
       if (!clear(before) || !clear(across) || !clear(after)) continue;
       out.resize(static_cast<std::size_t>(k));
-      out.push_back(before);
-      out.push_back(across);
-      out.push_back(after);
+      outLen.resize(static_cast<std::size_t>(k));
+      for (const PathSegment& p : {before, across, after}) {
+        out.push_back(p);
+        outLen.push_back(p.length());
+      }
       i = m + 1;  // go on after the cut
       done = true;
     }
     (done ? cut : left) += 1;
-    if (!done) out.push_back(in[i++]);
+    if (!done) take(i++);
   }
   path.segments.swap(out);
   plan.statistics["tips_cut"] = static_cast<double>(cut);

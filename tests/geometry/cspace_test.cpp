@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 using namespace coverkit;
@@ -448,7 +449,8 @@ std::vector<CSpace::SweepRequest> sweepRequestsOver(const Workspace& w, const Ra
 }  // namespace
 
 // CSpace::localSweeps builds U ∩ C-free from the C-obstacle pieces near U: the same exact set as
-// the whole C-space's, so the same sweeps to the bit, for any number of threads. Worlds: seeded
+// the whole C-space's, so the same sweeps to the bit, for any number of threads (the direct trace
+// off: TracedSweepsAreTheExactOnesUpToRounding compares it). Worlds: seeded
 // polygon worlds (every shape), a clustered grid map (obstacles on the border: a ragged outer
 // ring), rooms that are separate regions, and an outer ring of more than 2,000 vertices (offset
 // as triangles, only those near the strip's requests).
@@ -500,8 +502,8 @@ TEST(CSpace, LocalSweepsAreTheWholeCSpacesSweeps) {
     }
     EXPECT_GT(reached, requests.size() / 4) << w.name;
     EXPECT_GT(arcs, 0u) << w.name;
-    EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests))) << w.name;
-    EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests, 1e-6, 3))) << w.name << ", 3 threads";
+    EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests, 1e-6, 1, false))) << w.name;
+    EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(w, r, requests, 1e-6, 3, false))) << w.name << ", 3 threads";
   }
   // A small robot in a huge map: requests of 0.04 m spread over 100 km would ask for 10^13 buckets;
   // their count is capped (coarser buckets, the same sweeps).
@@ -514,8 +516,113 @@ TEST(CSpace, LocalSweepsAreTheWholeCSpacesSweeps) {
       requests.push_back({q, p, Rational(2 * D)});
     }
   const std::vector<CSpace::Sweep> whole = CSpace(huge, small).sweeps(requests);
-  EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(huge, small, requests))) << "huge map";
+  EXPECT_TRUE(sameSweeps(whole, CSpace::localSweeps(huge, small, requests, 1e-6, 1, false))) << "huge map";
   std::size_t reached = 0;
   for (const CSpace::Sweep& sw : whole) reached += sw.reached;
   EXPECT_GT(reached, 4u);
+}
+
+namespace {
+
+/// The radius Smooth-STC sweeps with: r + ε + δ (planners/src/smooth_stc.cpp, slackOf).
+Rational sweepRadius(const Workspace& w, const Rational& r) {
+  const Box b = w.bbox();
+  const double extent = std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
+  return Rational(r + exactFromDouble(std::ldexp(1.0, std::ilogb(1e-6 * extent) + 1)) + exactFromDouble(std::ldexp(1.0, std::ilogb(extent) - 36)));
+}
+
+}  // namespace
+
+// The direct trace among axis-parallel edges (CSpace::localSweeps with `trace`) against the exact
+// Boolean operations, at the radius Smooth-STC sweeps with. Grid maps (pixels of 1 and of 0.05, a
+// clustered map, rooms): every request is traced (requests over the whole box, bases in obstacles
+// too); an outer ring of 2,000 vertices, teeth narrower than r touching one offset line: 99 %.
+// Every traced sweep is the exact one to within 1e-9 of the extent (the same pieces, kinds, arcs'
+// centres, entry, exit, reach and far side); the others are the exact ones to the bit. Polygon
+// worlds with slanted edges: the requests whose edges within reach are all axis-parallel (about
+// three quarters) are traced. The trace does not depend on the threads.
+TEST(CSpace, TracedSweepsAreTheExactOnesUpToRounding) {
+  struct World {
+    Workspace w;
+    Rational r;
+    double tracedAtLeast;  // share of the requests traced
+  };
+  std::vector<World> worlds;
+  datasets::GridMapSpec g;
+  g.width = g.height = 40;
+  g.density = 0.2;
+  g.clustered = true;
+  g.seed = 7;
+  worlds.push_back({datasets::gridToWorkspace(datasets::generateGridMap(g), "clustered"), ratio(1, 2), 0.99});
+  g.density = 0.1;
+  g.seed = 3;
+  g.resolution = Rational(1, 20);
+  worlds.push_back({datasets::gridToWorkspace(datasets::generateGridMap(g), "clustered 0.05"), ratio(3, 40), 0.99});
+  worlds.push_back({datasets::parseTextGrid("resolution 1\n"
+                                            "###########\n"
+                                            "#....#....#\n"
+                                            "#.#..#....#\n"
+                                            "#....#.#..#\n"
+                                            "######....#\n"
+                                            "#....######\n"
+                                            "#.........#\n"
+                                            "###########\n",
+                                            "rooms.grid"),
+                    ratio(1, 4), 0.99});
+  Region comb;  // 520 teeth along the bottom of a 52 × 6 room: 2,082 vertices
+  for (int t = 0; t < 520; ++t) {
+    const Rational x0 = ratio(t, 10), x1 = ratio(2 * t + 1, 20), x2 = ratio(t + 1, 10);
+    comb.outer.push_back({x0, 0});
+    comb.outer.push_back({x1, 0});
+    comb.outer.push_back({x1, 1});
+    comb.outer.push_back({x2, 1});
+  }
+  comb.outer.push_back({52, 6});
+  comb.outer.push_back({0, 6});
+  comb.holes = {{{10, 2}, {12, 2}, {12, 4}, {10, 4}}};
+  Workspace combWorld;
+  combWorld.name = "comb";
+  combWorld.regions.push_back(comb);
+  normalise(combWorld);
+  worlds.push_back({combWorld, ratio(1, 2), 0.9});
+  for (std::uint64_t seed = 1; seed <= 2; ++seed) worlds.push_back({testing_helpers::mixedWorld(seed, 12, 8), ratio(1, 4), 0.5});
+  for (const World& world : worlds) {
+    const Rational R = sweepRadius(world.w, world.r);
+    const std::vector<CSpace::SweepRequest> requests = sweepRequestsOver(world.w, Rational(2 * world.r));
+    ASSERT_GT(requests.size(), 50u) << world.w.name;
+    const std::vector<CSpace::Sweep> exact = CSpace::localSweeps(world.w, R, requests, 1e-6, 1, false);
+    const std::vector<CSpace::Sweep> traced = CSpace::localSweeps(world.w, R, requests, 1e-6, 1, true);
+    EXPECT_TRUE(sameSweeps(traced, CSpace::localSweeps(world.w, R, requests, 1e-6, 3, true))) << world.w.name << ", 3 threads";
+    const Box b = world.w.bbox();
+    const double tol = 1e-9 * std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d());
+    auto near = [&](PointD p, PointD q) { return std::abs(p.x - q.x) <= tol && std::abs(p.y - q.y) <= tol; };
+    std::size_t count = 0, reached = 0;
+    for (std::size_t i = 0; i < requests.size(); ++i) {
+      const CSpace::Sweep &s = traced[i], &t = exact[i];
+      if (!s.traced) {
+        EXPECT_TRUE(sameSweeps({s}, {t})) << world.w.name << ", request " << i << " (not traced)";
+        continue;
+      }
+      ++count;
+      reached += s.reached;
+      ASSERT_EQ(s.reached, t.reached) << world.w.name << ", request " << i;
+      if (!s.reached) continue;
+      EXPECT_EQ(s.farSide, t.farSide) << world.w.name << ", request " << i;
+      EXPECT_TRUE(near(s.entry, t.entry) && near(s.exit, t.exit)) << world.w.name << ", request " << i;
+      ASSERT_EQ(s.pieces.size(), t.pieces.size()) << world.w.name << ", request " << i;
+      for (std::size_t j = 0; j < s.pieces.size(); ++j) {
+        const PathSegment &p = s.pieces[j], &q = t.pieces[j];
+        EXPECT_EQ(p.kind, q.kind) << world.w.name << ", request " << i << ", piece " << j;
+        EXPECT_TRUE(near(p.from, q.from) && near(p.to, q.to)) << world.w.name << ", request " << i << ", piece " << j;
+        if (p.kind == PathSegment::Kind::kArc) {
+          EXPECT_TRUE(near(p.center, q.center) && p.ccw == q.ccw) << world.w.name << ", request " << i;
+        }
+      }
+    }
+    EXPECT_GE(static_cast<double>(count), world.tracedAtLeast * static_cast<double>(requests.size())) << world.w.name;
+    if (world.tracedAtLeast > 0) {
+      EXPECT_GT(reached, count / 4) << world.w.name;
+    }
+    std::cout << world.w.name << ": " << count << " of " << requests.size() << " requests traced\n";
+  }
 }

@@ -187,6 +187,7 @@ public:
     PointD entry, exit;                ///< on the base (doubles of exact points)
     double entryT = 0, exitT = 0;      ///< their places on the base, 0 at a, 1 at d
     bool farSide = false;              ///< the sweep runs along U's side opposite the base
+    bool traced = false;               ///< made by the direct trace among axis-parallel edges (localSweeps)
   };
   /// All requests at once: C-free is clipped recursively to boxes around groups of requests, so the
   /// cost follows the requests and the curves near them, not requests × all curves.
@@ -197,8 +198,14 @@ public:
   /// a grid of buckets), so the cost grows with the requests and the obstacles near them, never with
   /// the union of all. The requests split into strips along x, one per thread (0: every core), each
   /// with its own pieces; the sweeps do not depend on `threads`.
+  ///
+  /// With `trace` (the default), a request whose edges within reach are all axis-parallel (every
+  /// grid map) is first traced directly on the offsets of those edges, in doubles with a margin of
+  /// 1e-9 of the map's extent for every decision (Sweep::traced); the trace gives up on any tie it
+  /// cannot decide with that margin, and the request then gets the exact sweep above. A traced
+  /// sweep is the exact one up to the doubles' rounding (tested), not to the bit.
   static std::vector<Sweep> localSweeps(const Workspace& w, const Rational& radius, const std::vector<SweepRequest>& requests,
-                                        double relativeEps = 1e-6, unsigned threads = 1);
+                                        double relativeEps = 1e-6, unsigned threads = 1, bool trace = true);
 
 private:
   friend struct detail::CSpaceAccess;
@@ -216,8 +223,10 @@ private:
 class OnlineSweeper {
 public:
   /// `cell`: the side of the buckets that index the pieces (a mega-cell). `w` is read as rings are
-  /// added: it must outlive the sweeper (it is not copied).
-  OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps = 1e-6);
+  /// added: it must outlive the sweeper (it is not copied). `trace`: as CSpace::localSweeps, from
+  /// the edges of the rings added so far, so that the sweeps equal localSweeps' once every ring
+  /// near a request is known.
+  OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps = 1e-6, bool trace = true);
   ~OnlineSweeper();
   OnlineSweeper(const OnlineSweeper&) = delete;
   OnlineSweeper& operator=(const OnlineSweeper&) = delete;

@@ -62,6 +62,9 @@ public:
   ClearanceChecker(const ClearanceChecker&) = delete;
   ClearanceChecker& operator=(const ClearanceChecker&) = delete;
   bool clear(const Point& a, const Point& b);
+  /// The same for a piece whose ends are doubles (a path's), read exactly as they are: no rationals
+  /// are made unless an edge needs the exact test.
+  bool clear(PointD a, PointD b);
   /// The arc from `from` about `center` (radius |from − center|), ccw or not, to the ray through
   /// `to`, as the validator reads an arc (false as well when `to` is not on the circle).
   bool clearArc(const Point& from, const Point& to, const Point& center, bool ccw);
