@@ -430,6 +430,40 @@ std::vector<CSpace::SweepRequest> sweepRequestsOver(const Workspace& w, const Ra
   return out;
 }
 
+/// 520 teeth along the bottom of a 52 × 6 room (2,082 vertices, offset as triangles), with `holes`.
+Workspace combWorld(std::vector<Ring> holes) {
+  Region comb;
+  for (int t = 0; t < 520; ++t) {
+    const Rational x0 = ratio(t, 10), x1 = ratio(2 * t + 1, 20), x2 = ratio(t + 1, 10);
+    comb.outer.push_back({x0, 0});
+    comb.outer.push_back({x1, 0});
+    comb.outer.push_back({x1, 1});
+    comb.outer.push_back({x2, 1});
+  }
+  comb.outer.push_back({52, 6});
+  comb.outer.push_back({0, 6});
+  comb.holes = std::move(holes);
+  Workspace w;
+  w.name = "comb";
+  w.regions.push_back(comb);
+  normalise(w);
+  return w;
+}
+
+/// Rooms that are separate regions, on a grid of 1 m.
+Workspace roomsWorld() {
+  return datasets::parseTextGrid("resolution 1\n"
+                                 "###########\n"
+                                 "#....#....#\n"
+                                 "#.#..#....#\n"
+                                 "#....#.#..#\n"
+                                 "######....#\n"
+                                 "#....######\n"
+                                 "#.........#\n"
+                                 "###########\n",
+                                 "rooms.grid");
+}
+
 ::testing::AssertionResult sameSweeps(const std::vector<CSpace::Sweep>& a, const std::vector<CSpace::Sweep>& b) {
   if (a.size() != b.size()) return ::testing::AssertionFailure() << a.size() << " against " << b.size() << " sweeps";
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -463,34 +497,10 @@ TEST(CSpace, LocalSweepsAreTheWholeCSpacesSweeps) {
   g.clustered = true;
   g.seed = 7;
   worlds.emplace_back(datasets::gridToWorkspace(datasets::generateGridMap(g), "clustered"), ratio(1, 2));
-  worlds.emplace_back(datasets::parseTextGrid("resolution 1\n"
-                                              "###########\n"
-                                              "#....#....#\n"
-                                              "#.#..#....#\n"
-                                              "#....#.#..#\n"
-                                              "######....#\n"
-                                              "#....######\n"
-                                              "#.........#\n"
-                                              "###########\n",
-                                              "rooms.grid"),
-                  ratio(1, 4));
-  Region comb;  // 520 teeth along the bottom of a 52 × 6 room: 2,082 vertices
-  for (int t = 0; t < 520; ++t) {
-    const Rational x0 = ratio(t, 10), x1 = ratio(2 * t + 1, 20), x2 = ratio(t + 1, 10);
-    comb.outer.push_back({x0, 0});
-    comb.outer.push_back({x1, 0});
-    comb.outer.push_back({x1, 1});
-    comb.outer.push_back({x2, 1});
-  }
-  comb.outer.push_back({52, 6});
-  comb.outer.push_back({0, 6});
-  comb.holes = {{{10, 2}, {12, 2}, {12, 4}, {10, 4}}, {{40, 2}, {43, 4}, {41, 5}}};
-  Workspace combWorld;
-  combWorld.name = "comb";
-  combWorld.regions.push_back(comb);
-  normalise(combWorld);
-  ASSERT_GT(combWorld.regions.at(0).outer.size(), 2000u);
-  worlds.emplace_back(combWorld, ratio(1, 2));
+  worlds.emplace_back(roomsWorld(), ratio(1, 4));
+  const Workspace comb = combWorld({{{10, 2}, {12, 2}, {12, 4}, {10, 4}}, {{40, 2}, {43, 4}, {41, 5}}});
+  ASSERT_GT(comb.regions.at(0).outer.size(), 2000u);
+  worlds.emplace_back(comb, ratio(1, 2));
   for (const auto& [w, r] : worlds) {
     const std::vector<CSpace::SweepRequest> requests = sweepRequestsOver(w, Rational(2 * r));
     ASSERT_GT(requests.size(), 50u) << w.name;
@@ -558,33 +568,8 @@ TEST(CSpace, TracedSweepsAreTheExactOnesUpToRounding) {
   g.seed = 3;
   g.resolution = Rational(1, 20);
   worlds.push_back({datasets::gridToWorkspace(datasets::generateGridMap(g), "clustered 0.05"), ratio(3, 40), 0.99});
-  worlds.push_back({datasets::parseTextGrid("resolution 1\n"
-                                            "###########\n"
-                                            "#....#....#\n"
-                                            "#.#..#....#\n"
-                                            "#....#.#..#\n"
-                                            "######....#\n"
-                                            "#....######\n"
-                                            "#.........#\n"
-                                            "###########\n",
-                                            "rooms.grid"),
-                    ratio(1, 4), 0.99});
-  Region comb;  // 520 teeth along the bottom of a 52 × 6 room: 2,082 vertices
-  for (int t = 0; t < 520; ++t) {
-    const Rational x0 = ratio(t, 10), x1 = ratio(2 * t + 1, 20), x2 = ratio(t + 1, 10);
-    comb.outer.push_back({x0, 0});
-    comb.outer.push_back({x1, 0});
-    comb.outer.push_back({x1, 1});
-    comb.outer.push_back({x2, 1});
-  }
-  comb.outer.push_back({52, 6});
-  comb.outer.push_back({0, 6});
-  comb.holes = {{{10, 2}, {12, 2}, {12, 4}, {10, 4}}};
-  Workspace combWorld;
-  combWorld.name = "comb";
-  combWorld.regions.push_back(comb);
-  normalise(combWorld);
-  worlds.push_back({combWorld, ratio(1, 2), 0.9});
+  worlds.push_back({roomsWorld(), ratio(1, 4), 0.99});
+  worlds.push_back({combWorld({{{10, 2}, {12, 2}, {12, 4}, {10, 4}}}), ratio(1, 2), 0.9});
   for (std::uint64_t seed = 1; seed <= 2; ++seed) worlds.push_back({testing_helpers::mixedWorld(seed, 12, 8), ratio(1, 4), 0.5});
   for (const World& world : worlds) {
     const Rational R = sweepRadius(world.w, world.r);
