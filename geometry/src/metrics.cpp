@@ -208,8 +208,9 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
       }
       if (s.kind == PathSegment::Kind::kArc) {
         const double rad = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
-        if (rad > 0) m.turningAngleDeg += s.length() / rad * 180 / M_PI;
-        if (rad > 0 && s.length() > 0) m.maxCurvature = std::max(m.maxCurvature, 1 / rad);
+        const double len = s.length();
+        if (rad > 0) m.turningAngleDeg += len / rad * 180 / M_PI;
+        if (rad > 0 && len > 0) m.maxCurvature = std::max(m.maxCurvature, 1 / rad);
       }
       prev = h1;
       have = true;

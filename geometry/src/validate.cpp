@@ -173,8 +173,10 @@ IA lbSegSeg(const IPointA& a, const IPointA& b, const IPointA& c, const IPointA&
 class ArcFilter {
 public:
   ArcFilter(const Point& f, const Point& t, const Point& c, const Rational& rho2, bool ccw)
-      : C_(toAdvanced(ip(c))), F_(toAdvanced(ip(f))), T_(toAdvanced(ip(t))), rho2_(advanced(iv(rho2))), rho_(CGAL::sqrt(rho2_)),
-        full_(f == t) {
+      : ArcFilter(toAdvanced(ip(f)), toAdvanced(ip(t)), toAdvanced(ip(c)), advanced(iv(rho2)), ccw, f == t) {}
+  /// From intervals holding the ends, the centre and ρ²; `full`: f == t exactly.
+  ArcFilter(const IPointA& f, const IPointA& t, const IPointA& c, const IA& rho2, bool ccw, bool full)
+      : C_(c), F_(f), T_(t), rho2_(rho2), rho_(CGAL::sqrt(rho2_)), full_(full) {
     B_ = asub(T_, C_);
     const IA lenB = anorm(B_);
     Tp_ = {C_.x + B_.x * rho_ / lenB, C_.y + B_.y * rho_ / lenB};
@@ -250,6 +252,44 @@ public:
                    [&] { return std::pair<Point, Point>(exactPoint(a), exactPoint(b)); });
   }
 
+  /// The same for an arc given by doubles (a path's): decided on doubles and intervals, without
+  /// rationals, when its end is certainly on the circle within the tolerance and every nearby edge
+  /// passes a filter; otherwise (and for the first piece, which must be tested inside W) the exact
+  /// way below. The verdict is the exact way's in both.
+  std::string arc(PointD f, PointD t, PointD c, bool ccw) {
+    auto exactWay = [&] { return arc(exactPoint(f), exactPoint(t), exactPoint(c), ccw); };
+    if (!insideChecked_ || !filtered_ || !filterable({c.x, c.y, f.x, f.y, t.x, t.y}) || (f.x == c.x && f.y == c.y)) return exactWay();
+    const IPointA F{IA(f.x), IA(f.y)}, T{IA(t.x), IA(t.y)}, C{IA(c.x), IA(c.y)};
+    IA rho2, t2;
+    std::optional<ArcFilter> intervals;
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const IPointA u = asub(F, C), v = asub(T, C);
+      rho2 = adot(u, u), t2 = adot(v, v);
+      // |t2 − ρ²| ≤ ρ²/10⁹ + 10⁻¹⁸, the exact way's test, with enclosures of both constants
+      const IA billionth(std::nextafter(1e-9, 0.0), std::nextafter(1e-9, 1.0)), tiny(std::nextafter(1e-18, 0.0), std::nextafter(1e-18, 1.0));
+      if (!CGAL::certainly(CGAL::abs(t2 - rho2) <= rho2 * billionth + tiny) || !CGAL::certainly(rho2 > 0)) return exactWay();
+      intervals.emplace(F, T, C, rho2, ccw, f.x == t.x && f.y == t.y);
+    }
+    // the double filter's radius and margin, as the exact way's (the end within |√t2 − ρ| of the circle)
+    const double rr = std::sqrt(rho2.inf());
+    const double m = rd_ + 1e-7 * scale_ + (std::sqrt(std::max(t2.sup(), rho2.sup())) - std::sqrt(std::min(t2.inf(), rho2.inf()))) +
+                     1e-12 * (std::sqrt(rho2.sup()) + std::abs(c.x) + std::abs(c.y));
+    const IA RI = advancedR();
+    const detail::IndexedEdge* first = index_.edges().data();
+    bool decided = true;
+    index_.query(c.x - rr - m, c.y - rr - m, c.x + rr + m, c.y + rr + m, [&](const detail::IndexedEdge& e) {
+      if (!decided) return;
+      const double dc = detail::pointSegDist(c.x, c.y, e.ax, e.ay, e.bx, e.by);
+      const double far = std::max(std::hypot(e.ax - c.x, e.ay - c.y), std::hypot(e.bx - c.x, e.by - c.y));
+      if (dc > rr + m || far < rr - m) return;
+      const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - first));
+      CGAL::Protect_FPU_rounding<true> upward;
+      if (!CGAL::certainly(intervals->lowerBound(ea, eb) >= RI)) decided = false;
+    });
+    return decided ? std::string() : exactWay();
+  }
+
   /// Arc from f about c (radius |f - c|) to the ray through t, ccw or not; then the straight jump
   /// from where the arc meets that ray to t (t lies on the circle only within a relative 1e-9).
   std::string arc(const Point& f, const Point& t, const Point& c, bool ccw) {
@@ -306,10 +346,7 @@ public:
       CGAL::Protect_FPU_rounding<true> upward;
       intervals.emplace(f, t, c, rho2, ccw);
     }
-    const IA RI = [this] {
-      const I q = iv(r_);
-      return IA(q.inf(), q.sup());
-    }();
+    const IA RI = advancedR();
     const detail::IndexedEdge* first = index_.edges().data();
     std::string bad;
     Expr found;  // the distance that was found below R (for the message)
@@ -456,6 +493,12 @@ private:
     return bad;
   }
 
+  /// r as an unprotected interval.
+  IA advancedR() const {
+    const I q = iv(r_);
+    return IA(q.inf(), q.sup());
+  }
+
   /// The intervals of edge i's ends, converted from the rationals once.
   const std::pair<IPointA, IPointA>& edgeIntervals(std::size_t i) {
     if (edgeI_.empty()) {
@@ -510,6 +553,9 @@ ClearanceChecker::ClearanceChecker(const Workspace& w, const Rational& r, bool f
 ClearanceChecker::~ClearanceChecker() = default;
 bool ClearanceChecker::clear(const Point& a, const Point& b) { return impl_->checker.segment(a, b).empty(); }
 bool ClearanceChecker::clear(PointD a, PointD b) { return impl_->checker.segment(a, b).empty(); }
+bool ClearanceChecker::clearArc(PointD from, PointD to, PointD center, bool ccw) {
+  return impl_->checker.arc(from, to, center, ccw).empty();
+}
 bool ClearanceChecker::clearArc(const Point& from, const Point& to, const Point& center, bool ccw) {
   return impl_->checker.arc(from, to, center, ccw).empty();
 }
@@ -552,7 +598,7 @@ RangeResult checkRange(const Problem& problem, const Path& path, int R, std::siz
       if (!why.empty()) add({"clearance", R, S, "joint: " + why});
     }
     std::string why = s.kind == PathSegment::Kind::kLine ? check.segment(s.from, s.to)
-                                                         : check.arc(exactPoint(s.from), exactPoint(s.to), exactPoint(s.center), s.ccw);
+                                                         : check.arc(s.from, s.to, s.center, s.ccw);
     if (!why.empty()) add({s.kind == PathSegment::Kind::kArc && why.find("circle") != std::string::npos ? "arc" : "clearance", R, S, why});
     if (o.cspace) {
       const bool clear = s.kind == PathSegment::Kind::kLine

@@ -112,12 +112,9 @@ CSpace::SweepRequest requestOf(const CellGrid& cells, const std::vector<CellInde
   return {cells.subCenter(a.col, a.row), cells.subCenter(d.col, d.row), Rational(2 * o.run * cells.subSize())};
 }
 
-Point exactOf(PointD p) { return {exactFromDouble(p.x), exactFromDouble(p.y)}; }
-
 /// A line or arc of the path, read exactly as the validator reads it, keeps the disc clear.
 bool pieceClear(ClearanceChecker& check, const PathSegment& p) {
-  return p.kind == PathSegment::Kind::kLine ? check.clear(p.from, p.to)
-                                            : check.clearArc(exactOf(p.from), exactOf(p.to), exactOf(p.center), p.ccw);
+  return p.kind == PathSegment::Kind::kLine ? check.clear(p.from, p.to) : check.clearArc(p.from, p.to, p.center, p.ccw);
 }
 
 /// The tour of a pocket's tree from a sub-cell (closed), or empty.
@@ -583,9 +580,8 @@ PointD headingOf(const PathSegment& p, bool atEnd) {
   return n > 0 ? PointD{x / n, y / n} : PointD{0, 0};
 }
 
-/// The point at arc length `l` from the start of a piece (0 ≤ l ≤ length).
-PointD pointAlong(const PathSegment& p, double l) {
-  const double len = p.length();
+/// The point at arc length `l` from the start of a piece (0 ≤ l ≤ len, its length).
+PointD pointAlong(const PathSegment& p, double l, double len) {
   if (len <= 0) return p.from;
   if (p.kind == PathSegment::Kind::kLine) {
     const double t = std::min(1.0, std::max(0.0, l / len));
@@ -643,7 +639,8 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
       while (m < in.size() && inLen[m] <= fwd) fwd -= inLen[m++];
       if (k < 0 || m >= in.size()) break;
       const PathSegment& pk = out[static_cast<std::size_t>(k)];
-      const PointD A = pointAlong(pk, outLen[static_cast<std::size_t>(k)] - back), B = pointAlong(in[m], fwd);
+      const PointD A = pointAlong(pk, outLen[static_cast<std::size_t>(k)] - back, outLen[static_cast<std::size_t>(k)]),
+                   B = pointAlong(in[m], fwd, inLen[m]);
       if (std::hypot(A.x - B.x, A.y - B.y) < w) continue;
       PathSegment before = pk, after = in[m];
       before.to = A;

@@ -106,7 +106,8 @@ TEST(Validator, SegmentClearPredicate) {
 // The interval filter in front of the exact tests must never change a verdict. Pieces are placed
 // at r·(1 + e) from obstacle edges and vertices whose coordinates are not doubles, with e down to
 // 1e-15 (where doubles cannot decide), and every verdict is compared with the unfiltered checker;
-// some arcs end a little off their circle, with the short jump the checker adds there.
+// some arcs end a little off their circle, with the short jump the checker adds there; arcs are
+// also given as doubles (ClearanceChecker::clearArc on PointD, what planners and the validator use).
 TEST(Validator, IntervalFilterNeverChangesAVerdict) {
   Workspace w;
   Region reg;
@@ -140,10 +141,13 @@ TEST(Validator, IntervalFilterNeverChangesAVerdict) {
       } else {  // an arc about vertex i
         // the end off the circle by up to 4e-10 of ρ in a third of them: a jump the filter bounds
         const double a0 = u(rng) * 2 * M_PI, a1 = a0 + (u(rng) - 0.5) * 2 * M_PI, off = rho * (1 + (trial % 3 == 1 ? 4e-10 : 0));
-        const Point f = P(ax + rho * std::cos(a0), ay + rho * std::sin(a0)), to = P(ax + off * std::cos(a1), ay + off * std::sin(a1));
+        const PointD fd{ax + rho * std::cos(a0), ay + rho * std::sin(a0)}, td{ax + off * std::cos(a1), ay + off * std::sin(a1)};
+        const Point f = P(fd.x, fd.y), to = P(td.x, td.y);
         const bool ccw = rng() % 2;
         a = fast.clearArc(f, to, P(ax, ay), ccw);
         b = exact.clearArc(f, to, P(ax, ay), ccw);
+        // the same arc as doubles (a path's), decided on intervals where they suffice
+        ASSERT_EQ(fast.clearArc(fd, td, PointD{ax, ay}, ccw), b) << "trial " << trial << " e = " << e << ", doubles";
       }
       ASSERT_EQ(a, b) << "trial " << trial << " e = " << e;
       (a ? clear : blocked) += 1;

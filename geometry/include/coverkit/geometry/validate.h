@@ -68,6 +68,9 @@ public:
   /// The arc from `from` about `center` (radius |from − center|), ccw or not, to the ray through
   /// `to`, as the validator reads an arc (false as well when `to` is not on the circle).
   bool clearArc(const Point& from, const Point& to, const Point& center, bool ccw);
+  /// The same for an arc whose points are doubles, read exactly: decided on intervals where they
+  /// suffice, the rationals made only otherwise (the same verdict).
+  bool clearArc(PointD from, PointD to, PointD center, bool ccw);
 
 private:
   struct Impl;
