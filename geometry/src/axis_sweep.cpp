@@ -27,6 +27,7 @@ namespace coverkit::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kAll = std::numeric_limits<double>::infinity();
 
 /// Distance from p to the axis-parallel segment ab.
 double distToAxisEdge(double px, double py, const AxisEdges::Edge& e) {
@@ -262,28 +263,34 @@ bool axisSweep(const AxisEdges& E, double r, const CSpace::SweepRequest& q, CSpa
     auto addT = [&](double t) {
       if (t * len > tol && (1 - t) * len > tol) ts.push_back(t);
     };
-    auto crossX = [&](double X) {  // where the candidate crosses the line x = X
+    // Where the candidate crosses the line x = X (y = Y) at a point whose other coordinate lies in
+    // [lo, hi] (a side of a capsule's rectangle, or of U, not its whole line: a crossing of the
+    // line beyond the side would only add a cut, which could fall within tol of a true one)
+    auto within = [&](double v, double lo, double hi) { return v >= lo - tol && v <= hi + tol; };
+    auto crossX = [&](double X, double lo = -kAll, double hi = kAll) {
       if (!c.arc) {
-        if (c.ax != c.bx) addT((X - c.ax) / (c.bx - c.ax));
+        if (c.ax != c.bx && within(c.ay, lo, hi)) addT((X - c.ax) / (c.bx - c.ax));
         return;
       }
       const double v = (X - c.cx) / r;
       if (std::abs(v) >= 1 - touch) return;  // misses, or touches: no crossing
       for (double th : {std::acos(v), -std::acos(v)}) {
+        if (!within(c.cy + r * std::sin(th), lo, hi)) continue;
         double u = c.th0 - th;
         while (u < 0) u += 2 * kPi;
         while (u >= 2 * kPi) u -= 2 * kPi;
         if (u < c.sweep) addT(u / c.sweep);
       }
     };
-    auto crossY = [&](double Y) {
+    auto crossY = [&](double Y, double lo = -kAll, double hi = kAll) {
       if (!c.arc) {
-        if (c.ay != c.by) addT((Y - c.ay) / (c.by - c.ay));
+        if (c.ay != c.by && within(c.ax, lo, hi)) addT((Y - c.ay) / (c.by - c.ay));
         return;
       }
       const double v = (Y - c.cy) / r;
       if (std::abs(v) >= 1 - touch) return;
       for (double th : {std::asin(v), kPi - std::asin(v)}) {
+        if (!within(c.cx + r * std::cos(th), lo, hi)) continue;
         double u = c.th0 - th;
         while (u < 0) u += 2 * kPi;
         while (u >= 2 * kPi) u -= 2 * kPi;
@@ -321,15 +328,16 @@ bool axisSweep(const AxisEdges& E, double r, const CSpace::SweepRequest& q, CSpa
       const double ey0 = std::min(e->ay, e->by) - r, ey1 = std::max(e->ay, e->by) + r;
       if (ex1 < cx0 - tol || ex0 > cx1 + tol || ey1 < cy0 - tol || ey0 > cy1 + tol) continue;
       blockers.push_back(e);
-      if (e->ay == e->by) {
-        crossX(std::min(e->ax, e->bx)), crossX(std::max(e->ax, e->bx)), crossY(e->ay - r), crossY(e->ay + r);
-      } else {
-        crossY(std::min(e->ay, e->by)), crossY(std::max(e->ay, e->by)), crossX(e->ax - r), crossX(e->ax + r);
+      const double lx = std::min(e->ax, e->bx), hx = std::max(e->ax, e->bx), ly = std::min(e->ay, e->by), hy = std::max(e->ay, e->by);
+      if (e->ay == e->by) {  // the rectangle [lx, hx] × [y − r, y + r]
+        crossX(lx, e->ay - r, e->ay + r), crossX(hx, e->ay - r, e->ay + r), crossY(e->ay - r, lx, hx), crossY(e->ay + r, lx, hx);
+      } else {               // [x − r, x + r] × [ly, hy]
+        crossY(ly, e->ax - r, e->ax + r), crossY(hy, e->ax - r, e->ax + r), crossX(e->ax - r, ly, hy), crossX(e->ax + r, ly, hy);
       }
       crossCircle(e->ax, e->ay);
       crossCircle(e->bx, e->by);
     }
-    if (c.side < 0) crossX(x0), crossX(x1), crossY(y0), crossY(y1);
+    if (c.side < 0) crossX(x0, y0, y1), crossX(x1, y0, y1), crossY(y0, x0, x1), crossY(y1, x0, x1);
     std::sort(ts.begin(), ts.end());
     std::size_t m = 1;
     for (std::size_t i = 1; i < ts.size(); ++i)
@@ -432,9 +440,15 @@ bool axisSweep(const AxisEdges& E, double r, const CSpace::SweepRequest& q, CSpa
     k0 = hz ? c.ay : c.ax, k1 = 0;
     return hz ? 0 : 1;
   };
+  // At a joint the pieces meet within the links' tolerance, normally to the last bits (both ends
+  // are the same crossing, computed from either side), and the next piece starts where the last
+  // one ends: an axis-parallel line stays exactly so. Where an arc's own end lies further from the
+  // joint than 1e-12 of the scale (two cuts within tol of each other were merged), the arc keeps its
+  // end, on its circle as the validator asks of an arc to 1e-9 of its radius, and the line moves.
+  const double jointTol = 1e-12 * E.scale();
+  auto apart = [&](PointD a, PointD b) { return std::abs(a.x - b.x) > jointTol || std::abs(a.y - b.y) > jointTol; };
   int lastKind = -1;
   double lk0 = 0, lk1 = 0;
-  PointD at = sweep.entry;
   for (std::size_t i : loop) {
     const Piece& p = pieces[i];
     const Cand& c = cands[p.cand];
@@ -443,13 +457,22 @@ bool axisSweep(const AxisEdges& E, double r, const CSpace::SweepRequest& q, CSpa
     const int kind = support(p, k0, k1);
     if (kind == lastKind && k0 == lk0 && k1 == lk1) {
       sweep.pieces.back().to = p.to;
+    } else if (sweep.pieces.empty()) {
+      if (c.arc && apart(sweep.entry, p.from)) sweep.entry = p.from;
+      sweep.pieces.push_back(c.arc ? PathSegment::arc(sweep.entry, p.to, {c.cx, c.cy}, false) : PathSegment::line(sweep.entry, p.to));
     } else {
-      sweep.pieces.push_back(c.arc ? PathSegment::arc(at, p.to, {c.cx, c.cy}, false) : PathSegment::line(at, p.to));
+      PathSegment& prev = sweep.pieces.back();
+      if (c.arc && prev.kind == PathSegment::Kind::kLine && apart(prev.to, p.from)) prev.to = p.from;
+      sweep.pieces.push_back(c.arc ? PathSegment::arc(prev.to, p.to, {c.cx, c.cy}, false) : PathSegment::line(prev.to, p.to));
     }
-    at = p.to;
     lastKind = kind, lk0 = k0, lk1 = k1;
   }
-  if (!sweep.pieces.empty()) sweep.pieces.back().to = exit;
+  if (!sweep.pieces.empty()) {
+    PathSegment& last = sweep.pieces.back();
+    if (last.kind == PathSegment::Kind::kArc && apart(last.to, exit)) exit = last.to;
+    else last.to = exit;
+  }
+  sweep.exit = exit;
   const double a0 = horizontal ? ax : ay, d0 = horizontal ? dx : dy;
   sweep.entryT = ((horizontal ? sweep.entry.x : sweep.entry.y) - a0) / (d0 - a0);
   sweep.exitT = ((horizontal ? sweep.exit.x : sweep.exit.y) - a0) / (d0 - a0);

@@ -87,7 +87,11 @@ std::vector<ParamSpec> entryParam() {
            "their own tree from the sweep (join), or left to the sweeps (leave)"},
           {"corners", ParamType::kChoice, "fill", "fill|keep",
            "at a right-angle turn whose outer corner nothing else sweeps: run on to the sub-cell's edge and cut back "
-           "diagonally (fill), or turn at the centre as STC does (keep)"}};
+           "diagonally (fill), or turn at the centre as STC does (keep)"},
+          {"sweeps", ParamType::kChoice, "trace", "trace|exact",
+           "how a sweep's contour is made: traced directly among axis-parallel edges where every decision has a margin, "
+           "the exact Boolean operations otherwise (trace), or always the exact Boolean operations (exact; slower, the "
+           "same contours to 1e-9 of the extent)"}};
 }
 
 /// ε + δ: ε a power of two at least the C-space's approximation bound (1e-6 of the extent, see
@@ -128,7 +132,8 @@ public:
   /// Online, `sensor` and `sweeper` are given: each sweep is made from what the sensor has reported.
   Refiner(const PlanningContext& ctx, const ParamSet& params, ClearanceChecker& check, PocketWalk pocketWalk,
           ObstacleSensor* sensor = nullptr, OnlineSweeper* sweeper = nullptr)
-      : ctx_(ctx), cells_(ctx.cells), sensor_(sensor), sweeper_(sweeper), every_(params.text("entries") == "every"),
+      : ctx_(ctx), cells_(ctx.cells), sensor_(sensor), sweeper_(sweeper), trace_(params.text("sweeps") == "trace"),
+        every_(params.text("entries") == "every"),
         throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"), check_(check),
         pocketWalk_(std::move(pocketWalk)), inTree_(cells_.megaCount(), 0), swept_(cells_.megaCount(), 0) {}
 
@@ -210,7 +215,7 @@ private:
       // (CSpace::localSweeps): no C-space of the whole map, a cost linear in the sweeps.
       const Rational r = ctx_.problem.robots.at(0).radius;
       std::vector<CSpace::Sweep> out =
-          CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads);
+          CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads, trace_);
       innerClear = checkInner(out);
       return out;
     }
@@ -415,7 +420,7 @@ private:
   const CellGrid& cells_;
   ObstacleSensor* sensor_;
   OnlineSweeper* sweeper_;
-  bool every_, throughRuns_, pockets_;
+  bool trace_, every_, throughRuns_, pockets_;
   ClearanceChecker& check_;
   PocketWalk pocketWalk_;
   std::vector<std::uint8_t> inTree_, swept_;
@@ -673,7 +678,8 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   if (online) {
     const Rational r = ctx.problem.robots.at(0).radius;
     sensor = std::make_unique<ObstacleSensor>(ctx.problem.workspace, ctx.cells);
-    sweeper = std::make_unique<OnlineSweeper>(ctx.problem.workspace, Rational(r + slackOf(ctx.problem.workspace)), 2 * ctx.cells.subSizeD());
+    sweeper = std::make_unique<OnlineSweeper>(ctx.problem.workspace, Rational(r + slackOf(ctx.problem.workspace)), 2 * ctx.cells.subSizeD(),
+                                              1e-6, params.text("sweeps") == "trace");
   }
   Refiner refiner(ctx, params, check, std::move(pocketWalk), sensor.get(), sweeper.get());
   refiner.tour(walk, path);
