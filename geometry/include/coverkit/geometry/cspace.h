@@ -203,7 +203,9 @@ public:
   /// grid map) is first traced directly on the offsets of those edges, in doubles with a margin of
   /// 1e-9 of the map's extent for every decision (Sweep::traced); the trace gives up on any tie it
   /// cannot decide with that margin, and the request then gets the exact sweep above. A traced
-  /// sweep is the exact one up to the doubles' rounding (tested), not to the bit.
+  /// sweep is the exact one up to the doubles' rounding (tested), not to the bit. The workspace is
+  /// checked (checkWorkspace, which CGAL's preconditions need) only when some request needs the
+  /// exact way; the readers check every polygon file anyway, and grid maps are valid by construction.
   static std::vector<Sweep> localSweeps(const Workspace& w, const Rational& radius, const std::vector<SweepRequest>& requests,
                                         double relativeEps = 1e-6, unsigned threads = 1, bool trace = true);
 
