@@ -37,7 +37,7 @@ double distToAxisEdge(double px, double py, const AxisEdges::Edge& e) {
 }
 
 /// Distance from p to segment ab, any direction.
-double distToAxisEdgeOrNot(double px, double py, const AxisEdges::Edge& e) {
+double distToEdge(double px, double py, const AxisEdges::Edge& e) {
   const double ex = e.bx - e.ax, ey = e.by - e.ay, l2 = ex * ex + ey * ey;
   double t = l2 > 0 ? ((px - e.ax) * ex + (py - e.ay) * ey) / l2 : 0;
   t = std::min(1.0, std::max(0.0, t));
@@ -158,13 +158,13 @@ int AxisEdges::inObstacle(double px, double py, double tol) const {
   for (double rho = cell_;; rho *= 2) {
     query({px - rho, py - rho, px + rho, py + rho}, found);
     double bestD = std::numeric_limits<double>::infinity();
-    for (const Edge* e : found) bestD = std::min(bestD, distToAxisEdgeOrNot(px, py, *e));
+    for (const Edge* e : found) bestD = std::min(bestD, distToEdge(px, py, *e));
     if (bestD <= rho) {
       if (bestD <= tol) return -1;  // on the boundary
       // every edge as near as the nearest (within tol) must tell the same
       int s = -1;
       for (const Edge* e : found) {
-        if (distToAxisEdgeOrNot(px, py, *e) > bestD + tol) continue;
+        if (distToEdge(px, py, *e) > bestD + tol) continue;
         const int t = status(*e);
         if (s >= 0 && t != s) return -1;
         s = t;
@@ -255,6 +255,7 @@ bool axisSweep(const AxisEdges& E, double r, const CSpace::SweepRequest& q, CSpa
   const double touch = 8 * (tol / r) * (tol / r) + 1e-15;
   std::vector<Piece> pieces;
   std::vector<double> ts;
+  std::vector<const AxisEdges::Edge*> blockers;
   for (std::size_t ci = 0; ci < cands.size(); ++ci) {
     const Cand& c = cands[ci];
     const double len = c.length(r);
@@ -321,7 +322,7 @@ bool axisSweep(const AxisEdges& E, double r, const CSpace::SweepRequest& q, CSpa
     };
     const double cx0 = c.arc ? c.cx - r : std::min(c.ax, c.bx), cx1 = c.arc ? c.cx + r : std::max(c.ax, c.bx);
     const double cy0 = c.arc ? c.cy - r : std::min(c.ay, c.by), cy1 = c.arc ? c.cy + r : std::max(c.ay, c.by);
-    std::vector<const AxisEdges::Edge*> blockers;
+    blockers.clear();
     for (const auto* e : edges) {
       if (c.side < 0 && (e->id == c.g1 || e->id == c.g2)) continue;
       const double ex0 = std::min(e->ax, e->bx) - r, ex1 = std::max(e->ax, e->bx) + r;

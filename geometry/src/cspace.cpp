@@ -15,7 +15,7 @@
 #include "axis_sweep.h"
 #include "circle_segment_area.h"
 #include "cspace_access.h"
-#include "parallel.h"
+#include <coverkit/geometry/parallel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -1170,11 +1170,12 @@ SweepBox checkedBox(const CSpace::SweepRequest& q, const char* who) {
   return boxOf(q);
 }
 
-/// What the sweeps without a CSpace need of their input (the CSpace constructor checks the same).
-void checkSweepInput(const Workspace& w, const Rational& radius) {
+/// What the sweeps without a CSpace need of their input (the CSpace constructor checks the same);
+/// the rings (checkWorkspace, which CGAL's preconditions need) only with `rings`.
+void checkSweepInput(const Workspace& w, const Rational& radius, bool rings = true) {
   if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
   if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
-  checkWorkspace(w);  // CGAL's preconditions are not input validation
+  if (rings) checkWorkspace(w);  // CGAL's preconditions are not input validation
 }
 
 }  // namespace
@@ -1199,8 +1200,7 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
                                                double relativeEps, unsigned threads, bool trace) {
   std::vector<Sweep> out(requests.size());
   if (requests.empty()) return out;
-  if (radius <= 0) throw InputError(w.name, "radius", "robot radius must be > 0 for sweeps");
-  if (w.regions.empty()) throw InputError(w.name, "workspace", "empty free space");
+  checkSweepInput(w, radius, false);  // the rings below, once a request needs the exact way
   std::vector<SweepBox> boxes;
   std::vector<double> sides;
   for (const SweepRequest& q : requests) {
@@ -1232,7 +1232,7 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
     order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return out[i].traced; }), order.end());
     if (order.empty()) return out;
   }
-  checkWorkspace(w);  // CGAL's preconditions are not input validation
+  checkWorkspace(w);
   const std::size_t strips = std::min<std::size_t>(detail::threadCount(threads), order.size());
   detail::parallelFor(strips, threads, [&](std::size_t k) {
     const std::size_t from = order.size() * k / strips, to = order.size() * (k + 1) / strips;

@@ -5,7 +5,7 @@
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
-#include "parallel.h"
+#include <coverkit/geometry/parallel.h>
 
 #include <algorithm>
 #include <array>

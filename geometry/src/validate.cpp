@@ -10,7 +10,7 @@
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
-#include "parallel.h"
+#include <coverkit/geometry/parallel.h>
 
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/Interval_nt.h>
@@ -275,17 +275,9 @@ public:
     const double rr = std::sqrt(rho2.inf());
     const double m = rd_ + 1e-7 * scale_ + (std::sqrt(std::max(t2.sup(), rho2.sup())) - std::sqrt(std::min(t2.inf(), rho2.inf()))) +
                      1e-12 * (std::sqrt(rho2.sup()) + std::abs(c.x) + std::abs(c.y));
-    const IA RI = advancedR();
-    const detail::IndexedEdge* first = index_.edges().data();
     bool decided = true;
     index_.query(c.x - rr - m, c.y - rr - m, c.x + rr + m, c.y + rr + m, [&](const detail::IndexedEdge& e) {
-      if (!decided) return;
-      const double dc = detail::pointSegDist(c.x, c.y, e.ax, e.ay, e.bx, e.by);
-      const double far = std::max(std::hypot(e.ax - c.x, e.ay - c.y), std::hypot(e.bx - c.x, e.by - c.y));
-      if (dc > rr + m || far < rr - m) return;
-      const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - first));
-      CGAL::Protect_FPU_rounding<true> upward;
-      if (!CGAL::certainly(intervals->lowerBound(ea, eb) >= RI)) decided = false;
+      if (decided && !filteredOut(e, c.x, c.y, rr, m, &*intervals)) decided = false;
     });
     return decided ? std::string() : exactWay();
   }
@@ -346,8 +338,6 @@ public:
       CGAL::Protect_FPU_rounding<true> upward;
       intervals.emplace(f, t, c, rho2, ccw);
     }
-    const IA RI = advancedR();
-    const detail::IndexedEdge* first = index_.edges().data();
     std::string bad;
     Expr found;  // the distance that was found below R (for the message)
     auto below = [&](const Expr& d) {
@@ -393,17 +383,7 @@ public:
     };
     const auto visit = [&](const detail::IndexedEdge& e) {
       if (!bad.empty()) return;
-      if (filter) {
-        // double filter: distance from the edge to the full circle's annulus
-        const double dc = detail::pointSegDist(cx, cy, e.ax, e.ay, e.bx, e.by);
-        const double far = std::max(std::hypot(e.ax - cx, e.ay - cy), std::hypot(e.bx - cx, e.by - cy));
-        if (dc > rr + m || far < rr - m) return;
-        if (intervals) {
-          const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - first));
-          CGAL::Protect_FPU_rounding<true> upward;
-          if (CGAL::certainly(intervals->lowerBound(ea, eb) >= RI)) return;
-        }
-      }
+      if (filter && filteredOut(e, cx, cy, rr, m, intervals ? &*intervals : nullptr)) return;
       if (clearOfCornerEdge(e)) return;
       ++exactTests;
       const ExactArc& X = exact();
@@ -493,10 +473,16 @@ private:
     return bad;
   }
 
-  /// r as an unprotected interval.
-  IA advancedR() const {
-    const I q = iv(r_);
-    return IA(q.inf(), q.sup());
+  /// Edge e is certainly at least r from the arc about (cx, cy) of radius about rr: beyond the
+  /// annulus rr ± m (doubles, with the margin), or bounded on intervals (`intervals`, if given).
+  bool filteredOut(const detail::IndexedEdge& e, double cx, double cy, double rr, double m, const ArcFilter* intervals) {
+    const double dc = detail::pointSegDist(cx, cy, e.ax, e.ay, e.bx, e.by);
+    const double far = std::max(std::hypot(e.ax - cx, e.ay - cy), std::hypot(e.bx - cx, e.by - cy));
+    if (dc > rr + m || far < rr - m) return true;
+    if (!intervals) return false;
+    const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - index_.edges().data()));
+    CGAL::Protect_FPU_rounding<true> upward;
+    return CGAL::certainly(intervals->lowerBound(ea, eb) >= R_);
   }
 
   /// The intervals of edge i's ends, converted from the rationals once.
@@ -517,6 +503,10 @@ private:
   Rational r_, r2_;
   IA R2_ = [this] {
     const I q = iv(r2_);
+    return IA(q.inf(), q.sup());
+  }();
+  IA R_ = [this] {
+    const I q = iv(r_);
     return IA(q.inf(), q.sup());
   }();
   std::vector<std::pair<IPointA, IPointA>> edgeI_;

@@ -56,6 +56,7 @@
 #include <coverkit/planners/smooth_stc.h>
 
 #include <coverkit/geometry/cspace.h>
+#include <coverkit/geometry/parallel.h>
 #include <coverkit/geometry/validate.h>
 
 #include <coverkit/planners/sensor.h>
@@ -66,8 +67,8 @@
 #include <cmath>
 #include <array>
 #include <functional>
+#include <optional>
 #include <set>
-#include <thread>
 
 namespace coverkit::planners {
 
@@ -246,23 +247,20 @@ private:
   }
 
   /// For each sweep, whether its pieces between the first and the last are exactly clear: the
-  /// sweeps in contiguous blocks, one per thread, each thread with its own checker. The verdicts
-  /// are the exact test's, whatever the thread count.
-  std::vector<std::uint8_t> checkInner(const std::vector<CSpace::Sweep>& sweeps) const {
+  /// sweeps in contiguous blocks of at least 16, one per thread, each block with its own checker
+  /// (one block: the tour's). The verdicts are the exact test's, whatever the thread count.
+  std::vector<std::uint8_t> checkInner(const std::vector<CSpace::Sweep>& sweeps) {
     std::vector<std::uint8_t> ok(sweeps.size(), 1);
-    const unsigned cores = ctx_.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : ctx_.threads;
-    const std::size_t blocks = std::min<std::size_t>(cores, std::max<std::size_t>(1, sweeps.size() / 16));
-    auto run = [&](std::size_t b) {
-      ClearanceChecker check(ctx_.problem.workspace, ctx_.problem.robots.at(0).radius);
+    const std::size_t blocks = std::min<std::size_t>(detail::threadCount(ctx_.threads), std::max<std::size_t>(1, sweeps.size() / 16));
+    detail::parallelFor(blocks, ctx_.threads, [&](std::size_t b) {
+      std::optional<ClearanceChecker> own;
+      if (blocks > 1) own.emplace(ctx_.problem.workspace, ctx_.problem.robots.at(0).radius);
+      ClearanceChecker& check = own ? *own : check_;
       for (std::size_t j = sweeps.size() * b / blocks; j < sweeps.size() * (b + 1) / blocks; ++j) {
         const std::vector<PathSegment>& p = sweeps[j].pieces;
         for (std::size_t i = 1; ok[j] && i + 1 < p.size(); ++i) ok[j] = pieceClear(check, p[i]);
       }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t b = 1; b < blocks; ++b) pool.emplace_back(run, b);
-    run(0);
-    for (std::thread& t : pool) t.join();
+    });
     return ok;
   }
 

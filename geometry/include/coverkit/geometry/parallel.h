@@ -1,8 +1,9 @@
 #pragma once
-// The geometry's phases that split over threads (`--threads`): the validator's ranges of a long
-// path, the metrics' rasters, a C-space's offsets and the coverable region's two C-spaces. Each job
-// writes its own slot, and the caller combines the slots in job order, so that results do not
-// depend on the number of threads.
+// The phases that split over threads (`--threads`): the validator's ranges of a long path, the
+// metrics' rasters, a C-space's offsets, the coverable region's two C-spaces, Smooth-STC's sweeps
+// and their exact checks. Each job writes its own slot, and the caller combines the slots in job
+// order, so that results do not depend on the number of threads. An internal helper of the
+// libraries (namespace detail), public so that the planners share it.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
