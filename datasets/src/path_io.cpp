@@ -85,6 +85,19 @@ std::vector<std::pair<std::string, double>> metricFields(const Metrics& m) {
     f.emplace_back("coverable_area_error", m.coverableAreaError);
     f.emplace_back("coverable_coverage", m.coverableCoverage);
   }
+  if (m.hasTeam) {
+    for (auto& kv : std::vector<std::pair<std::string, double>>{{"robots", static_cast<double>(m.robots)},
+            {"makespan_s", m.makespan},
+            {"sum_of_times_s", m.sumOfTimes},
+            {"steps", static_cast<double>(m.steps)},
+            {"repeated_steps", static_cast<double>(m.repeatedSteps)},
+            {"coverage_rate", m.coverageRate},
+            {"iteration_rate", m.iterationRate},
+            {"most_cells", static_cast<double>(m.mostCells)},
+            {"least_cells", static_cast<double>(m.leastCells)},
+            {"balance", m.balance}})
+      f.push_back(std::move(kv));
+  }
   return f;
 }
 
@@ -333,14 +346,23 @@ void appendNumber(std::string& out, double x) {
   out.append(buf.data(), static_cast<std::size_t>(end - buf.data()));
 }
 
-/// `"key": [x, y]` at depth `depth`, as dump(1) writes it.
+/// `"key": [x, y]` at depth `depth` (at most 8), as dump(1) writes it; no temporary strings, since
+/// this runs three times a segment on path files of a million segments.
 void appendPointMember(std::string& out, const char* key, PointD p, int depth) {
-  const std::string in(static_cast<std::size_t>(depth), ' ');
-  out += in + "\"" + key + "\": [\n" + in + " ";
+  static constexpr const char* kSpaces = "         ";
+  const std::size_t d = static_cast<std::size_t>(depth);
+  out.append(kSpaces, d);
+  out += '"';
+  out += key;
+  out += "\": [\n";
+  out.append(kSpaces, d + 1);
   appendNumber(out, p.x);
-  out += ",\n" + in + " ";
+  out += ",\n";
+  out.append(kSpaces, d + 1);
   appendNumber(out, p.y);
-  out += "\n" + in + "]";
+  out += '\n';
+  out.append(kSpaces, d);
+  out += ']';
 }
 
 /// The robots array at depth 1, as dump(1) of robotsJson would write it: written directly, because
@@ -350,6 +372,9 @@ void appendRobots(std::string& out, const std::vector<Path>& paths) {
     out += "[]";
     return;
   }
+  std::size_t pieces = 0;
+  for (const Path& p : paths) pieces += p.segments.size();
+  out.reserve(out.size() + 160 * pieces + 256);   // a line piece takes about 130 bytes, an arc 190
   out += "[\n";
   for (std::size_t r = 0; r < paths.size(); ++r) {
     const Path& p = paths[r];
@@ -375,6 +400,20 @@ void appendRobots(std::string& out, const std::vector<Path>& paths) {
     }
     out += ",\n";
     appendPointMember(out, "start", p.start, 3);
+    if (!p.timeline.empty()) {   // [[t, x, y], ...] at depth 3, as dump(1) writes it
+      out += ",\n   \"timeline\": [\n";
+      for (std::size_t k = 0; k < p.timeline.size(); ++k) {
+        const TimedPoint& e = p.timeline[k];
+        out += "    [\n     ";
+        appendNumber(out, e.t);
+        out += ",\n     ";
+        appendNumber(out, e.p.x);
+        out += ",\n     ";
+        appendNumber(out, e.p.y);
+        out += k + 1 < p.timeline.size() ? "\n    ],\n" : "\n    ]\n";
+      }
+      out += "   ]";
+    }
     out += r + 1 < paths.size() ? "\n  },\n" : "\n  }\n";
   }
   out += " ]";
@@ -407,7 +446,8 @@ std::string pathJson(const PathDocument& doc) {
     else appendDumped(out, it.value(), 1);
     out += k + 1 < j.size() ? ",\n" : "\n";
   }
-  return out + "}\n";
+  out += "}\n";
+  return out;
 }
 
 std::string pathFileContent(const std::string& file, const PathDocument& doc) {
@@ -561,7 +601,9 @@ void writeCSpaceFile(const std::string& file, const CSpaceDocument& doc) { write
 //  * `format` must be the string "coverkit.path/1"; `planner` and `status`, when present, strings;
 //  * `robot_radius_exact` / `cell_size_exact`, when present, rational strings > 0 (preferred);
 //    `robot_radius` / `cell_size`, when present, finite numbers > 0;
-//  * `robots` an array of objects with a `segments` array and an optional `start` [x, y];
+//  * `robots` an array of objects with a `segments` array, an optional `start` [x, y] and an
+//    optional `timeline` of finite [t, x, y] (whether it is a valid motion is the validator's
+//    verdict, kind "timeline", not a reading error);
 //  * a segment: `type` "line" or "arc", `from`, `to` (and an arc's `center`) finite [x, y], an
 //    arc's `ccw` a boolean (true when absent, as before);
 //  * `metrics` and `statistics`, when present, objects of numbers (null stands for a NaN written);
@@ -727,6 +769,16 @@ private:
       }
     }
     if (!hasStart) p.start = p.segments.front().from;
+    if (const json* tl = member(rj, "timeline")) {   // a timed plan: [[t, x, y], ...]
+      const std::string tp = join(place, "timeline");
+      if (!tl->is_array()) fail(tp, "expected an array of [t, x, y], found " + std::string(tl->type_name()));
+      for (std::size_t k = 0; k < tl->size(); ++k) {
+        const json& e = (*tl)[k];
+        const std::string at = tp + "[" + std::to_string(k) + "]";
+        if (!e.is_array() || e.size() != 3) fail(at, "expected [t, x, y], found " + (e.is_array() ? "an array of " + std::to_string(e.size()) : std::string(e.type_name())));
+        p.timeline.push_back({number(e[0], at + "[0]"), {number(e[1], at + "[1]"), number(e[2], at + "[2]")}});
+      }
+    }
     return p;
   }
   std::string file_;

@@ -4,6 +4,7 @@
 #include "runner.h"
 
 #include <coverkit/datasets/readers.h>
+#include <coverkit/datasets/scenario.h>
 #include <coverkit/geometry/error.h>
 
 #include <algorithm>
@@ -68,6 +69,27 @@ Problem makeProblem(const std::string& map, const std::string& radius, const std
   p.workspace = datasets::loadMap(map, mo);
   p.robots.push_back(robot);
   return p;
+}
+
+void addTeam(Problem& problem, const std::vector<std::string>& starts, int robots, const std::string& scenario) {
+  if (robots < 0) throw InputError("--robots", std::to_string(robots), "must be >= 1");
+  if (robots > 1000) throw InputError("--robots", std::to_string(robots), "at most 1000 robots");
+  if (robots > 0 && static_cast<std::size_t>(robots) < starts.size())
+    throw InputError("--robots", std::to_string(robots), "fewer robots than --start options (" + std::to_string(starts.size()) + ")");
+  const std::size_t n = std::max<std::size_t>({1, starts.size(), static_cast<std::size_t>(robots)});
+  const Robot first = problem.robots.at(0);
+  problem.robots.assign(n, Robot{first.radius, std::nullopt});
+  for (std::size_t i = 0; i < starts.size(); ++i) problem.robots[i].start = parsePoint(starts[i], "--start");
+  if (!scenario.empty()) problem.movingObstacles = datasets::readScenario(scenario);
+}
+
+planners::PlanningContext makeContext(Problem problem, const std::string& scenario) {
+  try {
+    return planners::makeContext(std::move(problem));
+  } catch (const InputError& e) {
+    if (e.file() == "--scenario" && !scenario.empty()) throw InputError(scenario, e.place(), e.problem());
+    throw;
+  }
 }
 
 Progress::Progress(std::size_t total) : total_(total), t0_(std::chrono::steady_clock::now()), tty_(isatty(2) != 0) {}

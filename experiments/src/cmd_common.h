@@ -3,6 +3,7 @@
 // problem read from the map options, and the progress bar.
 #include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/path.h>
+#include <coverkit/planners/planner.h>
 
 #include <CLI/CLI.hpp>
 
@@ -42,6 +43,13 @@ std::map<std::string, std::string> parseParams(const std::vector<std::string>& k
 /// The problem of one robot of radius `radius` (and `start`, unless empty) on the map `map`.
 Problem makeProblem(const std::string& map, const std::string& radius, const std::string& start, bool unknownFree,
                     const std::string& cellSize);
+/// A team from the command line: one robot per --start (in order), `robots` in all when larger (0:
+/// as many as starts, at least one), all of the first robot's radius; robots without a start are
+/// placed by makeContext (planners::spreadStarts). The scenario's moving obstacles, when given.
+void addTeam(Problem& problem, const std::vector<std::string>& starts, int robots, const std::string& scenario);
+/// planners::makeContext, its problem checks' errors about the scenario ("--scenario") naming the
+/// scenario file instead (when there is one).
+planners::PlanningContext makeContext(Problem problem, const std::string& scenario);
 
 /// A progress bar on stderr, shown only on a terminal and only once a run has taken a second.
 class Progress {

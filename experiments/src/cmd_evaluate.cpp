@@ -5,6 +5,7 @@
 #include "runner.h"
 
 #include <coverkit/datasets/path_io.h>
+#include <coverkit/datasets/scenario.h>
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
 
@@ -22,7 +23,7 @@ namespace {
 struct Options {
   MapArgs map;
   SpeedArgs speed;
-  std::string path, start;
+  std::string path, start, scenario;
   bool json = false, cspace = false;
 };
 Options& options() {
@@ -57,6 +58,7 @@ CLI::App* addEvaluateCommand(CLI::App& app) {
   addMapOptions(eval, o.map, false);
   eval->add_option("--path", o.path, "path file (.json or .csv)")->required();
   eval->add_option("--start", o.start, "the robot's start X,Y: the path must begin there (default: wherever it begins)");
+  eval->add_option("--scenario", o.scenario, "scenario file (coverkit.scenario/1): the plan must keep clear of its moving obstacles");
   eval->add_flag("--json", o.json, "print one JSON object");
   eval->add_flag("--cspace", o.cspace, "also check every piece against the (conservative) C-obstacles: violations of kind \"cspace\"");
   addSpeedOptions(eval, o.speed, "full");
@@ -81,8 +83,9 @@ int runEvaluateCommand() {
   for (std::size_t i = 0; i < doc.paths.size(); ++i)
     problem.robots[i].start = o.start.empty() ? Point{exactFromDouble(doc.paths[i].start.x), exactFromDouble(doc.paths[i].start.y)}
                                               : parsePoint(o.start, "--start");
+  if (!o.scenario.empty()) problem.movingObstacles = datasets::readScenario(o.scenario);
   timer.begin("cells");
-  const planners::PlanningContext ctx = planners::makeContext(problem);
+  const planners::PlanningContext ctx = makeContext(std::move(problem), o.scenario);
   ValidationOptions vo;
   vo.threads = threads();
   std::optional<CSpace> evalSpace;

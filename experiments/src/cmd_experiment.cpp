@@ -102,7 +102,7 @@ CLI::App* addExperimentCommand(CLI::App& app) {
   o.command->add_option("--shard", o.shard, "i/n: run only the cases k with k mod n = i (a job array); combine with `experiment merge`");
   // settings of some kinds' configs, given here instead (the kind's `options` in experiment_registry.cpp)
   const std::pair<const char*, const char*> settings[] = {
-      {"seeds", "bsa-backtracking: usable seeded maps (default 100); decompositions: worlds per hole count (default 25)"},
+      {"seeds", "bsa-backtracking: usable seeded maps (default 100); decompositions: worlds per hole count (default 25); team-check: scenarios (default 500)"},
       {"size", "bsa-backtracking: map side in cells (default 30)"},
       {"density", "bsa-backtracking: fraction of blocked cells (default 0.05)"},
       {"obstacles", "bsa-backtracking: clustered (blobs, default) or scattered (single cells)"}};

@@ -25,8 +25,9 @@ namespace {
 struct Options {
   MapArgs map;
   SpeedArgs speed;
-  std::string start, out, picture, planner = "stc", timeLimit;
-  std::vector<std::string> params, post;
+  std::string out, picture, planner = "stc", timeLimit, scenario;
+  std::vector<std::string> starts, params, post;
+  int robots = 0;
 };
 Options& options() {
   static Options o;
@@ -52,7 +53,10 @@ CLI::App* addPlanCommand(CLI::App& app) {
   auto* plan = app.add_subcommand("plan", "plan a coverage path");
   addMapOptions(plan, o.map, true);
   plan->add_option("--planner", o.planner, "planner name (see 'coverkit list')")->required();
-  plan->add_option("--start", o.start, "start X,Y (default: centre of the first free sub-cell of the largest free component)");
+  plan->add_option("--start", o.starts, "start X,Y (default: centre of the first free sub-cell of the largest free component); "
+                                        "repeatable: one robot per start (a team planner, e.g. multi_stc_balanced)");
+  plan->add_option("--robots", o.robots, "team size: robots without a --start are placed farthest apart (deterministic)");
+  plan->add_option("--scenario", o.scenario, "scenario file (coverkit.scenario/1: moving obstacles, docs/formats.md)");
   plan->add_option("--param", o.params, "planner parameter KEY=VALUE (repeatable)");
   plan->add_option("--post", o.post, "path processor NAME[:KEY=VALUE;...] run on the plan before it is validated (repeatable, in order; "
                                      "see 'coverkit list')");
@@ -79,10 +83,11 @@ int runPlanCommand() {
   PhaseTimer timer;
   progress.step("reading the map");
   timer.begin("read");
-  Problem problem = makeProblem(o.map.map, o.map.radius, o.start, o.map.unknownFree, o.map.cellSize);
+  Problem problem = makeProblem(o.map.map, o.map.radius, o.starts.empty() ? "" : o.starts[0], o.map.unknownFree, o.map.cellSize);
+  addTeam(problem, o.starts, o.robots, o.scenario);
   progress.step("classifying cells");
   timer.begin("cells");
-  planners::PlanningContext ctx = planners::makeContext(std::move(problem));
+  planners::PlanningContext ctx = makeContext(std::move(problem), o.scenario);
   ctx.threads = threads();
   const std::map<std::string, std::string> phaseName{
       {"planning", "plan"}, {"post-processing", "post"}, {"validating", "validate"}, {"metrics", "metrics"}};

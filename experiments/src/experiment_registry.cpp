@@ -30,6 +30,8 @@ const std::vector<ExperimentKind>& experimentKinds() {
       {"tracc-scenarios", "TRACC on the paper's 11×11 scenarios", traccExperiment},
       {"decompositions", "boustrophedon against trapezoidal cells, and boustrophedon coverage against the STC family", decompositionExperiment,
        {"seeds"}},
+      {"multi-st", "the Multi-ST paper's Tables 5-8 and Figs 15-17: multi_st and multi_stc_balanced on its grids", multiStExperiment},
+      {"team-check", "multi_st on seeded team scenarios: validity, completeness, determinism", teamCheckExperiment, {"seeds"}},
   };
   return kinds;
 }
@@ -44,6 +46,8 @@ const std::vector<NamedExperiment>& namedExperiments() {
       {"bsa-backtracking", "bsa-backtracking", "bsa_backtracking.yaml", "BSA paper, section 3: spiral against zigzag filling"},
       {"tracc-scenarios", "tracc-scenarios", "tracc_scenarios.yaml", "TRACC paper, section 3: its 11×11 scenarios"},
       {"decompositions", "decompositions", "decompositions.yaml", "boustrophedon against trapezoidal cells (docs/decompositions.md)"},
+      {"multi-st", "multi-st", "multi_st.yaml", "Multi-ST paper, Tables 5-8 and Figs 15-17, beside multi_stc_balanced (docs/multi-robot.md)"},
+      {"team-check", "team-check", "team_check.yaml", "multi_st on 500 seeded team scenarios: valid, complete, deterministic (docs/multi-robot.md)"},
   };
   return named;
 }

@@ -62,6 +62,16 @@ void checkCoverageVsTimeConfig(const std::string& configFile);
 constexpr int kDecompositionMaxSeeds = 10'000;
 std::unique_ptr<Experiment> decompositionExperiment(const std::string& configFile, const ConfigOverrides& overrides);
 
+/// The Multi-ST paper's Tables 5-8 and Figs 15-17 (kind `multi-st`, experiments/configs/multi_st.yaml:
+/// nothing to set): multi_st and multi_stc_balanced on the paper's grids (sub-cells of 1 m, seeded
+/// obstacles; see multi_st_experiment.cpp for the readings of the paper). One case per table row,
+/// one row per planner; summary.md and figs15-17.svg.
+std::unique_ptr<Experiment> multiStExperiment(const std::string& configFile, const ConfigOverrides& overrides);
+/// Seeded team scenarios (kind `team-check`, experiments/configs/team_check.yaml; key seeds, default
+/// 500): multi_st planned twice on each, validated, completeness and determinism counted,
+/// multi_stc_balanced's makespan beside it on the static ones. summary.md.
+std::unique_ptr<Experiment> teamCheckExperiment(const std::string& configFile, const ConfigOverrides& overrides);
+
 /// The path of a config shipped in experiments/configs/.
 std::string defaultConfig(const std::string& name);
 

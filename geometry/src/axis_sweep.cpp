@@ -29,11 +29,11 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kAll = std::numeric_limits<double>::infinity();
 
-/// Distance from p to the axis-parallel segment ab.
+/// Distance from p to the axis-parallel segment ab (compared with margins only: sqrt, not hypot).
 double distToAxisEdge(double px, double py, const AxisEdges::Edge& e) {
   const double x = std::min(std::max(px, std::min(e.ax, e.bx)), std::max(e.ax, e.bx));
   const double y = std::min(std::max(py, std::min(e.ay, e.by)), std::max(e.ay, e.by));
-  return std::hypot(px - x, py - y);
+  return std::sqrt((px - x) * (px - x) + (py - y) * (py - y));
 }
 
 /// Distance from p to segment ab, any direction.
@@ -41,7 +41,8 @@ double distToEdge(double px, double py, const AxisEdges::Edge& e) {
   const double ex = e.bx - e.ax, ey = e.by - e.ay, l2 = ex * ex + ey * ey;
   double t = l2 > 0 ? ((px - e.ax) * ex + (py - e.ay) * ey) / l2 : 0;
   t = std::min(1.0, std::max(0.0, t));
-  return std::hypot(px - e.ax - t * ex, py - e.ay - t * ey);
+  const double dx = px - e.ax - t * ex, dy = py - e.ay - t * ey;
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 int sgn(double v) { return (v > 0) - (v < 0); }

@@ -2,6 +2,8 @@
 #include <coverkit/geometry/cell_grid.h>
 #include <coverkit/geometry/error.h>
 
+#include "error_free.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -51,6 +53,7 @@ CellGrid::CellGrid(Rational originX, Rational originY, Rational subSize, int meg
   oxd_ = toDouble(ox_);
   oyd_ = toDouble(oy_);
   dd_ = toDouble(d_);
+  exactD_ = Rational(oxd_) == ox_ && Rational(oyd_) == oy_ && Rational(dd_) == d_;
   sub_.assign(static_cast<std::size_t>(subCols()) * subRows(), CellState::kBlocked);
 }
 
@@ -61,13 +64,28 @@ CellState CellGrid::mega(int col, int row) const {
   return CellState::kPartial;
 }
 
+namespace {
+/// o + d·(2i + 1)/2 in doubles when every step is exact (fma and TwoSum say so), as on a grid whose
+/// origin and sub-cell size are dyadic; false otherwise.
+bool exactCentre(double o, double d, int i, double& out) {
+  double p;
+  return detail::exactProduct(d, 2.0 * i + 1, p, 0x1p-1000) && detail::exactSum(o, p / 2, out);
+}
+}  // namespace
+
 Point CellGrid::subCenter(int col, int row) const {
+  PointD q;   // made from its exact double where there is one (a grid map's): one conversion, no arithmetic
+  if (exactD_ && exactCentre(oxd_, dd_, col, q.x) && exactCentre(oyd_, dd_, row, q.y)) return {Rational(q.x), Rational(q.y)};
   return {Rational(ox_ + d_ * (2 * col + 1) / 2), Rational(oy_ + d_ * (2 * row + 1) / 2)};
 }
 Point CellGrid::megaCenter(int col, int row) const {
   return {Rational(ox_ + d_ * (2 * col + 1)), Rational(oy_ + d_ * (2 * row + 1))};
 }
+
 PointD CellGrid::subCenterD(int col, int row) const {
+  // the rational centre's double, without rationals where doubles give it exactly
+  PointD q;
+  if (exactD_ && exactCentre(oxd_, dd_, col, q.x) && exactCentre(oyd_, dd_, row, q.y)) return q;
   Point p = subCenter(col, row);
   return {toDouble(p.x), toDouble(p.y)};
 }

@@ -1164,9 +1164,12 @@ private:
 
 /// The box of a sweep request, or std::invalid_argument (naming `who`) for a base that is not
 /// axis-parallel, is empty, or has no depth.
-SweepBox checkedBox(const CSpace::SweepRequest& q, const char* who) {
+void checkRequest(const CSpace::SweepRequest& q, const char* who) {
   if (q.depth <= 0 || (q.a.x != q.d.x && q.a.y != q.d.y) || q.a == q.d)
     throw std::invalid_argument(std::string(who) + ": the base must be axis-parallel, non-empty, with depth > 0");
+}
+SweepBox checkedBox(const CSpace::SweepRequest& q, const char* who) {
+  checkRequest(q, who);
   return boxOf(q);
 }
 
@@ -1201,11 +1204,20 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
   std::vector<Sweep> out(requests.size());
   if (requests.empty()) return out;
   checkSweepInput(w, radius, false);  // the rings below, once a request needs the exact way
-  std::vector<SweepBox> boxes;
-  std::vector<double> sides;
+  // each box's longer side and the sum of its x ends (the double of the exact values, as boxOf's
+  // box gives them), without making the boxes: the trace needs none, the exact way makes its own
+  std::vector<double> sides, centre;
+  sides.reserve(requests.size());
+  centre.reserve(requests.size());
   for (const SweepRequest& q : requests) {
-    boxes.push_back(checkedBox(q, "CSpace::localSweeps"));
-    sides.push_back(std::max(Rational(boxes.back().x1 - boxes.back().x0).get_d(), Rational(boxes.back().y1 - boxes.back().y0).get_d()));
+    checkRequest(q, "CSpace::localSweeps");
+    if (q.a.y == q.d.y) {   // horizontal: x from a to d, depth along y
+      sides.push_back(std::max(Rational(abs(q.d.x - q.a.x)), q.depth).get_d());
+      centre.push_back(Rational(q.a.x + q.d.x).get_d());
+    } else {                // vertical: depth along x, to the right of a → d
+      sides.push_back(std::max(Rational(abs(q.d.y - q.a.y)), q.depth).get_d());
+      centre.push_back(Rational(2 * q.a.x + (q.d.y > q.a.y ? q.depth : Rational(-q.depth))).get_d());
+    }
   }
   // buckets about as large as the usual request (a mega-cell for Smooth-STC)
   std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2), sides.end());
@@ -1217,8 +1229,6 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
   // each request's sweep whatever the strips.
   std::vector<std::size_t> order(requests.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::vector<double> centre(requests.size());
-  for (std::size_t i = 0; i < centre.size(); ++i) centre[i] = Rational(boxes[i].x0 + boxes[i].x1).get_d();
   std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return centre[i] < centre[j]; });
   if (trace) {
     detail::AxisEdges edges(w, cell);
@@ -1233,18 +1243,21 @@ std::vector<CSpace::Sweep> CSpace::localSweeps(const Workspace& w, const Rationa
     if (order.empty()) return out;
   }
   checkWorkspace(w);
+  std::vector<SweepBox> boxes;   // boxes[j]: request order[j]'s
+  boxes.reserve(order.size());
+  for (std::size_t i : order) boxes.push_back(boxOf(requests[i]));
   const std::size_t strips = std::min<std::size_t>(detail::threadCount(threads), order.size());
   detail::parallelFor(strips, threads, [&](std::size_t k) {
     const std::size_t from = order.size() * k / strips, to = order.size() * (k + 1) / strips;
-    BoxD near{boxes[order[from]].x0.get_d(), boxes[order[from]].y0.get_d(), boxes[order[from]].x1.get_d(), boxes[order[from]].y1.get_d()};
+    BoxD near{boxes[from].x0.get_d(), boxes[from].y0.get_d(), boxes[from].x1.get_d(), boxes[from].y1.get_d()};
     for (std::size_t j = from; j < to; ++j) {
-      const SweepBox& b = boxes[order[j]];
+      const SweepBox& b = boxes[j];
       near = {std::min(near.xmin, b.x0.get_d()), std::min(near.ymin, b.y0.get_d()), std::max(near.xmax, b.x1.get_d()),
               std::max(near.ymax, b.y1.get_d())};
     }
     LocalObstacles obstacles(w, radius, eps, near, cell);
     obstacles.addAllNear();
-    for (std::size_t j = from; j < to; ++j) out[order[j]] = sweepOf(obstacles.freeIn(boxes[order[j]]), requests[order[j]]);
+    for (std::size_t j = from; j < to; ++j) out[order[j]] = sweepOf(obstacles.freeIn(boxes[j]), requests[order[j]]);
   });
   return out;
 }
@@ -1261,6 +1274,7 @@ struct OnlineSweeper::Impl {
   /// The exact pieces of the rings added so far, made when a request first needs them.
   LocalObstacles& exact() {
     if (!obstacles) {
+      if (edges) checkWorkspace(workspace);   // CGAL's preconditions (the constructor checked them untraced)
       obstacles.emplace(workspace, radius, eps, boxOfWorkspace(workspace), cell);
       for (std::size_t g : regions) obstacles->addRegion(g);
       for (const auto& [g, k] : rings) obstacles->addRing(g, k);
@@ -1278,7 +1292,7 @@ struct OnlineSweeper::Impl {
 
 OnlineSweeper::OnlineSweeper(const Workspace& w, const Rational& radius, double cell, double relativeEps, bool trace) {
   if (!(cell > 0)) throw std::invalid_argument("OnlineSweeper: the bucket size must be > 0");
-  checkSweepInput(w, radius);
+  checkSweepInput(w, radius, !trace);   // traced, the rings are checked once a request needs the exact way
   impl_ = std::make_unique<Impl>(w, radius, cell, relativeEps, trace);
 }
 OnlineSweeper::~OnlineSweeper() = default;
@@ -1298,13 +1312,13 @@ void OnlineSweeper::addRing(std::size_t region, std::size_t ring) {
 }
 
 CSpace::Sweep OnlineSweeper::sweep(const CSpace::SweepRequest& q) const {
-  const SweepBox box = checkedBox(q, "OnlineSweeper::sweep");
+  checkRequest(q, "OnlineSweeper::sweep");
   CSpace::Sweep s;
   if (impl_->edges && detail::axisSweep(*impl_->edges, impl_->rd, q, s)) {
     s.traced = true;
     return s;
   }
-  return sweepOf(impl_->exact().freeIn(box), q);
+  return sweepOf(impl_->exact().freeIn(boxOf(q)), q);
 }
 
 }  // namespace coverkit

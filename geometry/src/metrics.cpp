@@ -133,6 +133,71 @@ double robotDistanceAt(const Path& path, double seconds, const MetricOptions& o)
   return s;
 }
 
+namespace {
+/// The timed plan's figures (Metrics::hasTeam and below). A move is a pair of consecutive entries at
+/// different places; the moves of all robots are taken in the order of their end times (ties by
+/// robot), and one is repeated when the sub-cell of its end was entered before, by any robot (the
+/// start's sub-cell counts as entered at t = 0).
+void teamFigures(const CellGrid& cells, const std::vector<Path>& paths, Metrics& m) {
+  bool timed = false;
+  for (const Path& p : paths) timed = timed || !p.timeline.empty();
+  if (!timed) return;
+  m.hasTeam = true;
+  m.robots = paths.size();
+  struct Move {
+    double t;
+    std::size_t robot;
+    long cell;   // -1: outside the grid
+  };
+  auto cellOf = [&](PointD q) -> long {
+    CellIndex c;
+    return cells.locateSubD(q, c) ? static_cast<long>(c.row) * cells.subCols() + c.col : -1;
+  };
+  std::vector<Move> moves;
+  std::vector<char> entered(cells.subCount(), 0);
+  std::vector<std::vector<char>> own(paths.size());
+  std::vector<std::size_t> ownCount(paths.size(), 0);
+  auto enter = [&](std::size_t robot, long cell) {
+    if (cell < 0) return;
+    if (own[robot].empty()) own[robot].assign(cells.subCount(), 0);
+    char& o = own[robot][static_cast<std::size_t>(cell)];
+    if (!o) o = 1, ++ownCount[robot];
+  };
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const auto& tl = paths[i].timeline;
+    if (tl.empty()) continue;
+    m.makespan = std::max(m.makespan, tl.back().t);
+    m.sumOfTimes += tl.back().t;
+    const long c0 = cellOf(tl.front().p);
+    if (c0 >= 0) entered[static_cast<std::size_t>(c0)] = 1;
+    enter(i, c0);
+    for (std::size_t k = 1; k < tl.size(); ++k)
+      if (tl[k].p.x != tl[k - 1].p.x || tl[k].p.y != tl[k - 1].p.y) moves.push_back({tl[k].t, i, cellOf(tl[k].p)});
+  }
+  std::stable_sort(moves.begin(), moves.end(), [](const Move& a, const Move& b) { return a.t < b.t || (a.t == b.t && a.robot < b.robot); });
+  for (const Move& mv : moves) {
+    ++m.steps;
+    enter(mv.robot, mv.cell);
+    if (mv.cell < 0) continue;
+    char& e = entered[static_cast<std::size_t>(mv.cell)];
+    if (e) ++m.repeatedSteps;
+    e = 1;
+  }
+  const double free = static_cast<double>(m.freeSubcells);
+  m.coverageRate = free > 0 ? (static_cast<double>(m.steps) - static_cast<double>(m.repeatedSteps)) / free : 0;
+  m.iterationRate = m.steps > 0 ? static_cast<double>(m.repeatedSteps) / static_cast<double>(m.steps) : 0;
+  std::size_t sum = 0;
+  m.leastCells = ownCount.empty() ? 0 : ownCount.front();
+  for (std::size_t c : ownCount) {
+    m.mostCells = std::max(m.mostCells, c);
+    m.leastCells = std::min(m.leastCells, c);
+    sum += c;
+  }
+  const double mean = ownCount.empty() ? 0 : static_cast<double>(sum) / static_cast<double>(ownCount.size());
+  m.balance = mean > 0 ? static_cast<double>(m.mostCells) / mean : 0;
+}
+}  // namespace
+
 Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std::vector<Path>& paths,
                        const MetricOptions& o) {
   Metrics m;
@@ -232,7 +297,10 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
   for (const Path& p : paths) m.robotTime = std::max(m.robotTime, robotTraversalTime(p, o));
 
   lap("sub-cells, length, turns");
-  if (!o.area) return m;
+  if (!o.area) {
+    teamFigures(cells, paths, m);
+    return m;
+  }
   m.hasArea = true;
   m.freeArea = freeArea(problem.workspace).get_d();
   double area = 0;
@@ -280,6 +348,7 @@ Metrics computeMetrics(const Problem& problem, const CellGrid& cells, const std:
     m.coverableCoverage = m.coverableArea > 0 ? area / m.coverableArea : 0;
     lap("coverable region");
   }
+  teamFigures(cells, paths, m);
   return m;
 }
 

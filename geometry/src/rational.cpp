@@ -94,6 +94,7 @@ double toDouble(const Rational& q) {
   if (mpz_popcount(den) == 1 && mpz_sizeinbase(num, 2) <= 53 && mpz_sizeinbase(den, 2) < 1000) return q.get_d();
   // mpq_get_d truncates; correct to nearest by comparing the neighbours exactly.
   double d = q.get_d();
+  if (!std::isfinite(d)) return d;   // beyond the doubles (GMP gives ±inf): no neighbours to compare
   double up = std::nextafter(d, HUGE_VAL), dn = std::nextafter(d, -HUGE_VAL);
   Rational e = abs(Rational(d) - q);
   double best = d;

@@ -1,7 +1,10 @@
 #include <coverkit/geometry/path.h>
 #include <coverkit/geometry/types.h>
 
+#include "error_free.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -101,6 +104,94 @@ const char* toString(PlanStatus s) {
 }
 
 namespace {
+/// An exact sum of doubles: Shewchuk's nonoverlapping expansion (components by increasing
+/// magnitude, zeros dropped), so that its sign is its largest component's. `ok` turns false when a
+/// product's rounding error could not be represented (underflow) or the expansion outgrows its room.
+struct Expansion {
+  std::array<double, 48> c{};
+  int n = 0;
+  bool ok = true;
+  void add(double b) {  // Grow-Expansion: TwoSum of b through every component
+    if (b == 0) return;
+    double q = b;
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      double e;
+      q = detail::twoSum(q, c[i], e);
+      if (e != 0) c[m++] = e;
+    }
+    if (m == static_cast<int>(c.size())) ok = false;
+    else if (q != 0) c[m++] = q;
+    n = m;
+  }
+  void addProduct(double x, double y, double sign) {  // x·y exactly: TwoProduct with fma
+    const double p = x * y;
+    if (p == 0 ? (x != 0 && y != 0) : std::abs(p) < 0x1p-900) ok = false;
+    add(sign * p);
+    add(sign * std::fma(x, y, -p));
+  }
+  int sign() const { return n == 0 ? 0 : (c[n - 1] > 0 ? 1 : -1); }
+  double estimate() const {
+    double v = 0;
+    for (int i = 0; i < n; ++i) v += c[i];
+    return v;
+  }
+  void negate() {
+    for (int i = 0; i < n; ++i) c[i] = -c[i];
+  }
+};
+
+/// The cross (cr) and dot (dt) products of u = from − c and v = to − c exactly, as expansions of
+/// doubles (each difference is two doubles by TwoSum, each product two by fma). False where a
+/// coordinate is beyond 2^200 or a product underflows: the rationals decide those.
+bool exactProducts(const PathSegment& s, Expansion& cr, Expansion& dt) {
+  for (double v : {s.from.x, s.from.y, s.to.x, s.to.y, s.center.x, s.center.y})
+    if (!(std::abs(v) <= 0x1p200)) return false;
+  auto diff = [](double a, double b, std::array<double, 2>& d) { d[0] = detail::twoSum(a, -b, d[1]); };   // a − b = d[0] + d[1]
+  std::array<double, 2> ux, uy, vx, vy;
+  diff(s.from.x, s.center.x, ux);
+  diff(s.from.y, s.center.y, uy);
+  diff(s.to.x, s.center.x, vx);
+  diff(s.to.y, s.center.y, vy);
+  for (double a : ux)
+    for (double b : vy) cr.addProduct(a, b, 1);
+  for (double a : uy)
+    for (double b : vx) cr.addProduct(a, b, -1);
+  for (double a : ux)
+    for (double b : vx) dt.addProduct(a, b, 1);
+  for (double a : uy)
+    for (double b : vy) dt.addProduct(a, b, 1);
+  return cr.ok && dt.ok;
+}
+
+/// |a / b| rounded toward zero, as mpq_get_d gives it, for exact a, b ≠ 0: the largest double q
+/// with q·|b| ≤ |a|, found from the estimate by exact signs of |a| − q·|b|. False where q is not
+/// well inside the normal doubles or the estimate is more than a few steps off.
+bool truncatedRatio(Expansion a, Expansion b, double& q) {
+  if (a.sign() < 0) a.negate();
+  if (b.sign() < 0) b.negate();
+  q = a.estimate() / b.estimate();
+  if (!std::isnormal(q) || q > 0x1p900 || q < 0x1p-900) return false;
+  auto excess = [&](double t) {  // sign of |a| − t·|b|
+    Expansion d = a;
+    for (int i = 0; i < b.n; ++i) d.addProduct(t, b.c[i], -1);
+    return d.ok ? d.sign() : 2;
+  };
+  for (int step = 0;; ++step) {
+    const int e = excess(q);
+    if (e == 2 || step == 4) return false;
+    if (e >= 0) break;
+    q = std::nextafter(q, 0.0);
+  }
+  for (int step = 0;; ++step) {
+    const double up = std::nextafter(q, HUGE_VAL);
+    const int e = excess(up);
+    if (e == 2 || step == 4) return false;
+    if (e < 0) return true;
+    q = up;
+  }
+}
+
 /// The angle swept by an arc, in [0, 2π]: from == to is a full circle (as the validator and
 /// docs/formats.md read it). The angle between u = from − c and v = to − c is taken from the exact
 /// cross and dot products (the doubles are exact rationals), so that an arc whose ends differ by
@@ -108,6 +199,24 @@ namespace {
 /// and nothing overflows for coordinates up to the largest double.
 double arcSweep(const PathSegment& s) {
   if (s.from.x == s.to.x && s.from.y == s.to.y) return 2 * M_PI;
+  auto fromSigned = [&](double th) {
+    if (s.ccw) return th >= 0 ? th : 2 * M_PI + th;
+    return th <= 0 ? -th : 2 * M_PI - th;
+  };
+  // the same angle as the rationals below give, to the bit, from exact sums of doubles (ten times
+  // faster: a large plan's metrics ask for every arc's angle several times)
+  Expansion ecr, edt;
+  double q;
+  if (exactProducts(s, ecr, edt)) {
+    const int scr = ecr.sign(), sdt = edt.sign();
+    if (scr == 0) return fromSigned(sdt >= 0 ? 0 : M_PI);
+    if (sdt == 0) return fromSigned(scr > 0 ? M_PI / 2 : -M_PI / 2);
+    if (truncatedRatio(ecr, edt, q)) {
+      const double t = std::atan(q);
+      const double mag = sdt > 0 ? t : M_PI - t;
+      return fromSigned(scr > 0 ? mag : -mag);
+    }
+  }
   const Rational cx = exactFromDouble(s.center.x), cy = exactFromDouble(s.center.y);
   const Rational ux = exactFromDouble(s.from.x) - cx, uy = exactFromDouble(s.from.y) - cy;
   const Rational vx = exactFromDouble(s.to.x) - cx, vy = exactFromDouble(s.to.y) - cy;
@@ -122,8 +231,7 @@ double arcSweep(const PathSegment& s) {
     const double mag = sgn(dt) > 0 ? t : M_PI - t;
     th = sgn(cr) > 0 ? mag : -mag;
   }
-  if (s.ccw) return th >= 0 ? th : 2 * M_PI + th;
-  return th <= 0 ? -th : 2 * M_PI - th;
+  return fromSigned(th);
 }
 
 /// The part of segment ab inside the box (Liang–Barsky): [t0, t1] ⊆ [0, 1], and its end points.

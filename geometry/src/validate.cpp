@@ -10,6 +10,8 @@
 #include <coverkit/geometry/validate.h>
 
 #include "edge_index.h"
+#include "error_free.h"
+#include "team.h"
 #include <coverkit/geometry/parallel.h>
 
 #include <CGAL/CORE_Expr.h>
@@ -94,7 +96,14 @@ using I = CGAL::Interval_nt<true>;
 struct IPoint {
   I x, y;
 };
-I iv(const Rational& q) { return I(CGAL::to_interval(q)); }
+/// The tightest interval of q; a dyadic q of at most 53 bits (a grid map's coordinates) is a double
+/// exactly, read without the general conversion (MPFR's, a few percent of a large validation).
+I iv(const Rational& q) {
+  const mpz_srcptr num = q.get_num_mpz_t(), den = q.get_den_mpz_t();
+  const std::size_t denBits = mpz_sizeinbase(den, 2);
+  if (mpz_sizeinbase(num, 2) <= 53 && denBits <= 1000 && mpz_scan1(den, 0) + 1 == denBits) return I(q.get_d());
+  return I(CGAL::to_interval(q));
+}
 IPoint ip(const Point& p) { return {iv(p.x), iv(p.y)}; }
 
 /// Three-valued truth: 0 no, 1 yes, 2 undecided on intervals.
@@ -114,6 +123,40 @@ inline IPointA asub(const IPointA& a, const IPointA& b) { return {a.x - b.x, a.y
 inline IA across(const IPointA& a, const IPointA& b) { return a.x * b.y - a.y * b.x; }
 inline IA adot(const IPointA& a, const IPointA& b) { return a.x * b.x + a.y * b.y; }
 inline IA anorm(const IPointA& a) { return CGAL::sqrt(adot(a, a)); }
+
+/// Whether segments ab and cd, both axis-parallel with ends that are doubles (point intervals), are
+/// at least √r2 apart, decided exactly without rationals: 1 yes, 0 no, -1 not decidable this way.
+/// Two such segments are boxes, √(gx² + gy²) apart with each gap one subtraction; every step is
+/// checked error-free (TwoSum for sums, fma for squares), so a grid map's pieces at exactly r from
+/// an obstacle edge, where every interval bound straddles r², need no rational arithmetic. Call in
+/// round-to-nearest mode (TwoSum needs it), with r2 a double that is r² exactly. `d2` is then the
+/// exact squared distance.
+int axisPiecesClear(const IPointA& A, const IPointA& B, const IPointA& C, const IPointA& D, double r2, double& d2) {
+  for (const IPointA* p : {&A, &B, &C, &D})
+    if (!p->x.is_point() || !p->y.is_point()) return -1;
+  const double ax = A.x.inf(), ay = A.y.inf(), bx = B.x.inf(), by = B.y.inf();
+  const double cx = C.x.inf(), cy = C.y.inf(), dx = D.x.inf(), dy = D.y.inf();
+  if ((ax != bx && ay != by) || (cx != dx && cy != dy)) return -1;
+  constexpr double kBig = 0x1p500;
+  for (double v : {ax, ay, bx, by, cx, cy, dx, dy})
+    if (!(std::abs(v) <= kBig)) return -1;
+  // the gap between [lo1, hi1] and [lo2, hi2]: rounding keeps a difference's sign, so the larger
+  // of the two differences is the gap when positive; it must then be exact
+  auto gap = [&](double lo1, double hi1, double lo2, double hi2, double& g) {
+    const double g1 = lo2 - hi1, g2 = lo1 - hi2;
+    if (g1 <= 0 && g2 <= 0) {
+      g = 0;
+      return true;
+    }
+    return g1 > 0 ? detail::exactSum(lo2, -hi1, g) : detail::exactSum(lo1, -hi2, g);
+  };
+  double gx, gy, qx, qy;
+  if (!gap(std::min(ax, bx), std::max(ax, bx), std::min(cx, dx), std::max(cx, dx), gx) ||
+      !gap(std::min(ay, by), std::max(ay, by), std::min(cy, dy), std::max(cy, dy), gy) || !detail::exactProduct(gx, gx, qx) ||
+      !detail::exactProduct(gy, gy, qy) || !detail::exactSum(qx, qy, d2))
+    return -1;
+  return d2 >= r2 ? 1 : 0;
+}
 
 /// ≤ the distance from p to segment ab (pointSegDistance); 0 when ab may be degenerate. Call
 /// under CGAL::Protect_FPU_rounding<true>.
@@ -448,29 +491,41 @@ private:
     const bool filter = filterable({ax, ay, bx, by});
     std::string bad;
     std::optional<KS> s;
+    double d2d = 0;
     const detail::IndexedEdge* first = index_.edges().data();
     index_.query(std::min(ax, bx) - m, std::min(ay, by) - m, std::max(ax, bx) + m, std::max(ay, by) + m,
                  [&](const detail::IndexedEdge& e) {
                    if (!bad.empty()) return;
-                   if (filter && detail::segSegDist(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m) return;
+                   if (filter && detail::segSegDist2(ax, ay, bx, by, e.ax, e.ay, e.bx, e.by) > m * m) return;
                    if (filter && filtered_) {
                      const auto& [ea, eb] = edgeIntervals(static_cast<std::size_t>(&e - first));
-                     CGAL::Protect_FPU_rounding<true> upward;
-                     if (CGAL::certainly(lbSegSeg2(A, B, ea, eb) >= R2_)) return;
+                     {
+                       CGAL::Protect_FPU_rounding<true> upward;
+                       if (CGAL::certainly(lbSegSeg2(A, B, ea, eb) >= R2_)) return;
+                     }
+                     const int axis = R2_.is_point() ? axisPiecesClear(A, B, ea, eb, R2_.inf(), d2d) : -1;
+                     if (axis == 1) return;
+                     if (axis == 0) {
+                       bad = tooNear(d2d, e);
+                       return;
+                     }
                    }
                    ++exactTests;
                    const auto& [a, b] = exactEnds();
                    if (!s) s.emplace(kp(a), kp(b));
                    KS es(kp(*e.a), kp(*e.b));
                    const mpq_class d2 = (a == b) ? CGAL::squared_distance(kp(a), es) : CGAL::squared_distance(*s, es);
-                   if (d2 < r2_) {
-                     std::ostringstream os;
-                     os << "disc meets an obstacle: distance " << std::sqrt(d2.get_d()) << " < r = " << rd_
-                        << " to boundary edge (" << e.ax << "," << e.ay << ")-(" << e.bx << "," << e.by << ")";
-                     bad = os.str();
-                   }
+                   if (d2 < r2_) bad = tooNear(d2.get_d(), e);
                  });
     return bad;
+  }
+
+  /// The violation of a piece whose squared distance to edge e is d2 < r².
+  std::string tooNear(double d2, const detail::IndexedEdge& e) const {
+    std::ostringstream os;
+    os << "disc meets an obstacle: distance " << std::sqrt(d2) << " < r = " << rd_ << " to boundary edge (" << e.ax << "," << e.ay
+       << ")-(" << e.bx << "," << e.by << ")";
+    return os.str();
   }
 
   /// Edge e is certainly at least r from the arc about (cx, cy) of radius about rr: beyond the
@@ -657,6 +712,7 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
     }
     rep.exactTests += exact;
   }
+  if (detail::needsTeamChecks(problem, paths)) detail::checkTeam(problem, paths, add);
   return rep;
 }
 

@@ -52,7 +52,19 @@ void checkPostSteps(const std::vector<PostStep>& steps) {
 }
 
 Plan postProcess(const Problem& problem, Plan plan, const std::vector<PostStep>& steps) {
-  if (plan.paths.empty()) return plan;
+  if (plan.paths.empty() || steps.empty()) return plan;
+  // A processor moves the pieces, which a timeline's entries lie on. One robot in a static world
+  // needs no timing: its timeline is dropped (the robot-time metric times the processed path). A
+  // team, or a robot among moving obstacles, must keep its timing: refused (docs/post-processing.md).
+  bool timed = false;
+  for (const Path& p : plan.paths) timed = timed || !p.timeline.empty();
+  if (timed && (plan.paths.size() > 1 || !problem.movingObstacles.empty()))
+    throw InputError("--post", steps.front().name,
+                     "a team plan (or one among moving obstacles) is timed, and a path processor would move its pieces off its timeline");
+  if (timed) {
+    for (Path& p : plan.paths) p.timeline.clear();
+    plan.statistics["post_timeline_dropped"] = 1;
+  }
   std::map<std::string, int> seen;
   for (const PostStep& s : steps) {
     // the second fillet of a chain reports as post_fillet_2_...

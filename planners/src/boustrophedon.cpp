@@ -740,7 +740,7 @@ FramePlan planDirection(const Problem& problem, const Rational& rPlan, const std
   const double r = problem.robots[0].radius.get_d();
   const Point start = *problem.robots[0].start;
   auto t0 = Clock::now();
-  const Decomposed d = runDecomposition(decomposition, {problem.workspace, {{rPlan, std::nullopt}}, std::nullopt},
+  const Decomposed d = runDecomposition(decomposition, {problem.workspace, {{rPlan, std::nullopt}}, std::nullopt, {}},
                                         {{"direction", formatDouble(degrees)}});
   fp.cspaceSeconds = d.cspaceSeconds;
   fp.decomposeSeconds = d.decomposeSeconds;

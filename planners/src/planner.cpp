@@ -16,6 +16,7 @@ const char* toString(ParamType t) {
     case ParamType::kDouble: return "double";
     case ParamType::kBool: return "bool";
     case ParamType::kChoice: return "choice";
+    case ParamType::kPath: return "path";
   }
   return "?";
 }
@@ -49,6 +50,8 @@ ParamSet::ParamSet(const std::vector<ParamSpec>& specs, const std::map<std::stri
       const auto choices = split(s.range, '|');
       if (std::find(choices.begin(), choices.end(), v) == choices.end())
         throw InputError("--param", place, "must be one of " + s.range);
+    } else if (s.type == ParamType::kPath) {
+      if (v.empty()) throw InputError("--param", place, "must be one of " + s.range + " (FILE: the path of a file)");
     } else if (s.type == ParamType::kBool) {
       if (v != "true" && v != "false") throw InputError("--param", place, "must be true or false");
     } else {
@@ -119,8 +122,8 @@ std::optional<Point> defaultStart(const CellGrid& cells) {
     // first sub-cell in row order of that mega-cell: its bottom-left quadrant. Its centre is taken
     // as the double next to it towards the mega-cell's centre (the waypoint STC uses), so that the
     // start as written in a path file is exactly the start.
-    const Point c = cells.subCenter(2 * mega->col, 2 * mega->row), m = cells.megaCenter(mega->col, mega->row);
-    return Point{exactFromDouble(roundToward(c.x, m.x)), exactFromDouble(roundToward(c.y, m.y))};
+    const PointD w = stcWaypoint(cells, 2 * mega->col, 2 * mega->row);
+    return Point{exactFromDouble(w.x), exactFromDouble(w.y)};
   }
   auto sub = firstOfLargest(cells.subCols(), cells.subRows(), [&](int c, int r) { return cells.sub(c, r) == CellState::kFree; });
   if (sub) {
@@ -128,6 +131,62 @@ std::optional<Point> defaultStart(const CellGrid& cells) {
     return Point{exactFromDouble(toDouble(c.x)), exactFromDouble(toDouble(c.y))};
   }
   return std::nullopt;
+}
+
+PointD stcWaypoint(const CellGrid& cells, int col, int row) {
+  const Point c = cells.subCenter(col, row), m = cells.megaCenter(col / 2, row / 2);
+  return {roundToward(c.x, m.x), roundToward(c.y, m.y)};
+}
+
+void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::vector<MovingObstacle>& obstacles) {
+  // the sub-cells of free mega-cells, as a 4-connected grid of sub-cells
+  const int cols = cells.subCols(), rows = cells.subRows();
+  auto usable = [&](int c, int r) { return c >= 0 && r >= 0 && c < cols && r < rows && cells.mega(c / 2, r / 2) == CellState::kFree; };
+  auto waypoint = [&](long v) { return stcWaypoint(cells, static_cast<int>(v % cols), static_cast<int>(v / cols)); };
+  auto exactly = [](PointD p) { return Point{exactFromDouble(p.x), exactFromDouble(p.y)}; };
+  std::vector<long> placed;
+  auto cellOf = [&](const Point& p) -> long {
+    CellIndex ci;
+    if (!cells.locateSub(p, ci) || !usable(ci.col, ci.row)) return -1;
+    return static_cast<long>(ci.row) * cols + ci.col;
+  };
+  for (const Robot& r : robots)
+    if (r.start && cellOf(*r.start) >= 0) placed.push_back(cellOf(*r.start));
+  if (placed.empty()) {   // the documented default start first
+    const std::optional<Point> d = defaultStart(cells);
+    if (!d || cellOf(*d) < 0) throw InputError("--robots", std::to_string(robots.size()), "no free mega-cell to place the robots in");
+    placed.push_back(cellOf(*d));
+    for (Robot& r : robots)
+      if (!r.start) {
+        r.start = exactly(waypoint(placed.back()));
+        break;
+      }
+  }
+  for (Robot& r : robots) {
+    if (r.start) continue;
+    // the farthest reachable sub-cell from those placed, first in row order, not where a moving
+    // obstacle starts (within r + its radius, with a margin; checkProblem decides exactly)
+    const std::vector<int> dist = graph::gridDistances(cols, rows, placed, [&](int v) { return usable(v % cols, v / cols); });
+    auto nearObstacle = [&](long v) {
+      if (obstacles.empty()) return false;
+      const PointD c = waypoint(v);
+      for (const MovingObstacle& m : obstacles) {
+        if (m.waypoints.empty()) continue;
+        const double dx = c.x - m.waypoints.front().p.x, dy = c.y - m.waypoints.front().p.y;
+        const double reach = Rational(r.radius + m.radius).get_d() * (1 + 1e-9) + 1e-9;
+        if (dx * dx + dy * dy < reach * reach) return true;
+      }
+      return false;
+    };
+    long best = -1;
+    for (long v = 0; v < static_cast<long>(dist.size()); ++v)
+      if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] > dist[static_cast<std::size_t>(best)]) && !nearObstacle(v))
+        best = v;
+    if (best < 0) throw InputError("--robots", std::to_string(robots.size()), "more robots than sub-cells of free mega-cells reachable from the first" +
+                                                                  std::string(obstacles.empty() ? "" : " and clear of the moving obstacles' first places"));
+    placed.push_back(best);
+    r.start = exactly(waypoint(best));
+  }
 }
 
 namespace {
@@ -163,6 +222,27 @@ void checkProblem(const Problem& problem) {
       throw InputError("--start", shortText(r.start->x) + "," + shortText(r.start->y), "start is outside the workspace or inside an obstacle of " + name);
   }
   if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", shortText(*problem.cellSize), "must be > 0");
+  // a team: no two robots start nearer than the sum of their radii, no moving obstacle starts on a
+  // robot (exactly; touching is allowed, as the validator allows it)
+  auto dist2 = [](const Point& a, const Point& b) { return Rational((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); };
+  for (std::size_t i = 0; i < problem.robots.size(); ++i) {
+    const Robot& a = problem.robots[i];
+    if (!a.start) continue;
+    for (std::size_t j = i + 1; j < problem.robots.size(); ++j) {
+      const Robot& b = problem.robots[j];
+      if (b.start && dist2(*a.start, *b.start) < (a.radius + b.radius) * (a.radius + b.radius))
+        throw InputError("--start", "robots " + std::to_string(i) + " and " + std::to_string(j),
+                         "start closer than the sum of their radii (" + shortText(Rational(a.radius + b.radius)) + ")");
+    }
+    for (std::size_t o = 0; o < problem.movingObstacles.size(); ++o) {
+      const MovingObstacle& m = problem.movingObstacles[o];
+      if (m.waypoints.empty()) throw InputError("--scenario", "dynamic_obstacles[" + std::to_string(o) + "]", "no waypoints");
+      const Point at{exactFromDouble(m.waypoints.front().p.x), exactFromDouble(m.waypoints.front().p.y)};
+      if (dist2(*a.start, at) < (a.radius + m.radius) * (a.radius + m.radius))
+        throw InputError("--scenario", "dynamic_obstacles[" + std::to_string(o) + "]",
+                         "starts on robot " + std::to_string(i) + " (nearer than r + its radius to the robot's start)");
+    }
+  }
 }
 
 void checkCellGridSize(const Problem& problem) {
@@ -201,8 +281,16 @@ PlanningContext makeContext(Problem problem) {
   const auto t0 = std::chrono::steady_clock::now();
   ctx.cells = classifyCells(problem.workspace, problem.subCellSize());
   ctx.cellSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (Robot& r : problem.robots)
-    if (!r.start) r.start = defaultStart(ctx.cells);
+  std::size_t unplaced = 0;
+  for (const Robot& r : problem.robots) unplaced += !r.start;
+  if (problem.robots.size() > 1 && unplaced > 0) {
+    spreadStarts(ctx.cells, problem.robots, problem.movingObstacles);
+    checkProblem(problem);   // the placed starts against the moving obstacles
+  } else {
+    for (Robot& r : problem.robots)
+      if (!r.start) r.start = defaultStart(ctx.cells);
+    if (unplaced > 0 && !problem.movingObstacles.empty()) checkProblem(problem);   // the default start against the obstacles
+  }
   ctx.problem = std::move(problem);
   return ctx;
 }

@@ -6,6 +6,7 @@
 #include <coverkit/planners/tracc.h>
 #include <coverkit/planners/decompositions.h>
 #include <coverkit/planners/boustrophedon.h>
+#include <coverkit/planners/multi_stc.h>
 
 #include <algorithm>
 
@@ -24,6 +25,8 @@ Registry& Registry::instance() {
     r.add("bsa_spiral", [] { return std::make_unique<BsaPlanner>(BsaPlanner::Filling::kSpiral); });
     r.add("bsa_zigzag", [] { return std::make_unique<BsaPlanner>(BsaPlanner::Filling::kZigzag); });
     r.add("boustrophedon", [] { return std::make_unique<BoustrophedonPlanner>(); });
+    r.add("multi_stc_balanced", [] { return std::make_unique<MultiStcBalancedPlanner>(); });
+    r.add("multi_st", [] { return std::make_unique<MultiStPlanner>(); });
     return r;
   }();
   return registry;
@@ -45,6 +48,9 @@ Plan runPlanner(const std::string& name, const PlanningContext& context, const s
                 double timeLimitSeconds) {
   auto planner = Registry::instance().create(name);
   const ParamSet set(planner->params(), params, name);
+  if (context.problem.robots.size() > 1 && !planner->capabilities().multiRobot)
+    throw InputError("--planner", name, "plans for one robot, and the problem has " + std::to_string(context.problem.robots.size()) +
+                                            " (team planners: multi_st, multi_stc_balanced)");
   Plan plan = planner->plan(context, set, TerminationCondition(timeLimitSeconds));
   plan.planner = name;
   plan.timings.insert(plan.timings.begin(), {"cells", context.cellSeconds});

@@ -470,7 +470,7 @@ public:
     const std::size_t c = static_cast<std::size_t>(by * nx_ + bx);
     const double limit = r_ * (1 + 1e-9);
     for (std::size_t k = start_[c]; k < start_[c + 1]; ++k)
-      if (distance(path.segments[pieces_[k]], w) <= limit) return true;
+      if (within(path.segments[pieces_[k]], w, limit)) return true;
     return false;
   }
 
@@ -478,14 +478,19 @@ private:
   long key(double v, double origin, long n) const {
     return std::min(n - 1, std::max(0L, static_cast<long>((v - origin) / cell_)));
   }
-  static double distance(const PathSegment& s, PointD p) {
+  /// Whether p lies within `limit` of piece s (in doubles: squared distances for lines; for arcs,
+  /// the circle's annulus first, so that most arcs need no angles).
+  static bool within(const PathSegment& s, PointD p, double limit) {
     if (s.kind == PathSegment::Kind::kLine) {
       const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y, len2 = dx * dx + dy * dy;
       double t = len2 > 0 ? ((p.x - s.from.x) * dx + (p.y - s.from.y) * dy) / len2 : 0;
       t = std::min(1.0, std::max(0.0, t));
-      return std::hypot(p.x - s.from.x - t * dx, p.y - s.from.y - t * dy);
+      const double ex = p.x - s.from.x - t * dx, ey = p.y - s.from.y - t * dy;
+      return ex * ex + ey * ey <= limit * limit;
     }
     const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
+    const double dc = std::hypot(p.x - s.center.x, p.y - s.center.y);
+    if (std::abs(dc - rho) > limit) return false;   // beyond the whole circle's reach
     const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x), a1 = std::atan2(s.to.y - s.center.y, s.to.x - s.center.x);
     const double ap = std::atan2(p.y - s.center.y, p.x - s.center.x);
     auto sweep = [&](double from, double to) {  // ccw angle from `from` to `to` in [0, 2π)
@@ -494,8 +499,8 @@ private:
       return d;
     };
     const bool inside = s.ccw ? sweep(a0, ap) <= sweep(a0, a1) : sweep(a1, ap) <= sweep(a1, a0);
-    if (inside) return std::abs(std::hypot(p.x - s.center.x, p.y - s.center.y) - rho);
-    return std::min(std::hypot(p.x - s.from.x, p.y - s.from.y), std::hypot(p.x - s.to.x, p.y - s.to.y));
+    if (inside) return true;   // |dc − ρ| ≤ limit above
+    return std::min(std::hypot(p.x - s.from.x, p.y - s.from.y), std::hypot(p.x - s.to.x, p.y - s.to.y)) <= limit;
   }
   double r_, cell_ = 1, x0_ = 0, y0_ = 0;
   long nx_ = 1, ny_ = 1;

@@ -432,6 +432,34 @@ expect_bad "plan: --metrics unknown" "--metrics" plan --map "$T/room.wkt" --radi
 expect_bad "plan: --threads not a number" "--threads" plan --map "$T/room.wkt" --radius 0.25 --planner stc --threads many --out "$T/out.json"
 expect_bad "cspace: --threads not a number" "--threads" cspace --map "$T/room.wkt" --radius 0.25 --threads many --out "$T/out.json"
 
+# --------------------------------------------------------------------------------------------- teams
+team() { echo plan --planner multi_stc_balanced --map "$T/room.wkt" --radius 0.25 --out "$T/out.json"; }
+printf 'format: coverkit.scenario/1\ndynamic_obstacles:\n  - radius: 0.3\n    waypoints: [[0, 8, 8], [1, 8]]\n' > "$T/short.yaml"
+printf 'format: coverkit.scenario/1\ndynamic_obstacle: []\n' > "$T/typo.yaml"
+printf 'format: coverkit.scenario/1\ndynamic_obstacles:\n  - radius: 0.5\n    waypoints: [[0, 1.2, 1]]\n' > "$T/onrobot.yaml"
+printf 'format: coverkit.scenario/1\ndynamic_obstacles:\n  - radius: 0.3\n    waypoints: [[0, 8, 8]]\n' > "$T/still.yaml"
+expect_bad "team: two starts nearer than 2r" "--start: robots 0 and 1: start closer than the sum of their radii" $(team) --start 1,1 --start 1,1.4
+expect_bad "team: a start in an obstacle" "inside an obstacle" $(team) --start 1,1 --start 5,5
+expect_bad "team: fewer --robots than starts" "--robots: 1: fewer robots than --start options" $(team) --start 1,1 --start 3,1 --robots 1
+expect_bad "team: --robots negative" "--robots: -2: must be >= 1" $(team) --robots -2
+expect_bad "team: a single-robot planner" "--planner: stc: plans for one robot" $(plan) "$T/room.wkt" --robots 2
+expect_bad "scenario: a waypoint of two numbers" "short.yaml: dynamic_obstacles[0].waypoints[1]: expected [t, x, y]" $(team) --scenario "$T/short.yaml"
+expect_bad "scenario: a misspelt key" "typo.yaml: dynamic_obstacle: unknown key" $(team) --scenario "$T/typo.yaml"
+expect_bad "scenario: missing file" "nothere.yaml" $(team) --scenario "$T/nothere.yaml"
+expect_bad "scenario: an obstacle on a robot" "onrobot.yaml: dynamic_obstacles[0]: starts on robot 0" $(team) --start 1,1 --scenario "$T/onrobot.yaml"
+"$CK" plan --planner multi_stc_balanced --map "$DATA/maze.map" --radius 0.25 --robots 3 --out "$T/team.json" > /dev/null 2>&1 &&
+  python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert len(d['robots']) == 3 and all(len(r['timeline']) > 1 for r in d['robots'])" "$T/team.json" &&
+  "$CK" evaluate --map "$DATA/maze.map" --path "$T/team.json" > "$T/team.out" 2>&1 && grep -q "valid: yes" "$T/team.out" &&
+  "$CK" evaluate --map "$DATA/maze.map" --path "$T/team.json" --scenario "$T/still.yaml" > "$T/team2.out" 2>&1; rc=$?
+[ -f "$T/team.out" ] && grep -q "valid: yes" "$T/team.out" && { [ $rc -eq 0 ] || grep -q "robot_obstacle" "$T/team2.out"; } && ok ||
+  bad "team plan and its evaluation: $(cat "$T/team.out" "$T/team2.out" 2> /dev/null | head -5)"
+# among a moving obstacle: planned around it, and valid against it
+"$CK" plan --planner multi_stc_balanced --map "$T/room.wkt" --radius 0.25 --start 1,1 --start 9,9 --scenario "$T/still.yaml" \
+  --out "$T/moving.json" > /dev/null 2>&1 &&
+  "$CK" evaluate --map "$T/room.wkt" --path "$T/moving.json" --scenario "$T/still.yaml" 2>&1 | grep -q "valid: yes" && ok ||
+  bad "team plan among a moving obstacle"
+expect_bad "evaluate: a malformed scenario" "typo.yaml: dynamic_obstacle: unknown key" evaluate --map "$DATA/maze.map" --path "$T/team.json" --scenario "$T/typo.yaml"
+
 # --------------------------------------------------------------------------------------------- provenance
 # --version (and run.json) name the revision built (cmake/git_revision.cmake), not the one configured
 SRC="$(cd "$DATA/../.." && pwd)"

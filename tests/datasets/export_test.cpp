@@ -136,9 +136,9 @@ TEST(SafeExport, EachArcOnTheSideItsObstacleAllows) {
   const Rational r(1, 2);
   // about the pillar's corner (6, 6), radius r exactly: only lines outside the circle keep clearance
   const Path corner{{6.5, 5}, {PathSegment::line({6.5, 5}, {6.5, 6}), PathSegment::arc({6.5, 6}, {6, 6.5}, {6, 6}, true),
-                               PathSegment::line({6, 6.5}, {5, 6.5})}};
+                               PathSegment::line({6, 6.5}, {5, 6.5})}, {}};
   // a circle about the room's centre touching the right wall (x = 10) at angle 0: only chords do
-  const Path wall{{9.5, 5}, {PathSegment::arc({9.5, 5}, {9.5, 5}, {5, 5}, true)}};
+  const Path wall{{9.5, 5}, {PathSegment::arc({9.5, 5}, {9.5, 5}, {5, 5}, true)}, {}};
   ASSERT_TRUE(validFor(w, r, {corner}));
   ASSERT_TRUE(validFor(w, r, {wall}));
   for (const Path& p : {corner, wall}) {

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 
@@ -139,4 +141,41 @@ TEST(PathFiles, CsvRowsAreChecked) {
   EXPECT_EQ(d.paths[0].segments.size(), 1u);
   EXPECT_EQ(d.paths[1].segments.size(), 0u);
   EXPECT_EQ(d.paths[1].start.x, 5);
+}
+
+// A timed team plan: each robot's timeline ([t, x, y]) is written beside its segments and reads
+// back to the bit; the text is what nlohmann's dump(1) makes of it (the writer writes the robots
+// directly, in that layout); a malformed timeline is an InputError naming its place.
+TEST(PathFiles, TimelinesReadBackAndKeepTheLayout) {
+  datasets::PathDocument doc;
+  doc.planner = "multi";
+  doc.status = "exact_solution";
+  doc.robotRadius = Rational(1, 4);
+  doc.cellSize = Rational(1, 2);
+  for (int r = 0; r < 2; ++r) {
+    Path p = Path::fromPoints({{0.25 + r, 0.25}, {0.25 + r, 1.75}});
+    p.timeline = {{0, {0.25 + r, 0.25}}, {0.1, {0.25 + r, 0.25}}, {1.0 / 3, {0.25 + r, 1.75}}};
+    doc.paths.push_back(p);
+  }
+  doc.paths[1].segments.clear();   // a robot that stays where it is
+  doc.paths[1].timeline.resize(1);
+  const fs::path f = fs::path(COVERKIT_TEST_TMP) / "path_io" / "timed.json";
+  fs::create_directories(f.parent_path());
+  datasets::writePathFile(f.string(), doc);
+  const std::string text = datasets::pathJson(doc);
+  EXPECT_EQ(nlohmann::json::parse(text).dump(1) + "\n", text);
+  const datasets::PathDocument back = datasets::readPathFile(f.string());
+  ASSERT_EQ(back.paths.size(), 2u);
+  ASSERT_EQ(back.paths[0].timeline.size(), 3u);
+  EXPECT_EQ(back.paths[0].timeline[2].t, 1.0 / 3);
+  EXPECT_EQ(back.paths[0].timeline[2].p.y, 1.75);
+  EXPECT_EQ(back.paths[1].timeline.size(), 1u);
+  // untimed documents keep their bytes: no timeline member at all
+  datasets::PathDocument plain = doc;
+  for (Path& p : plain.paths) p.timeline.clear();
+  EXPECT_EQ(datasets::pathJson(plain).find("timeline"), std::string::npos);
+  const std::string head = R"({"format":"coverkit.path/1","robots":[{"segments":[],"start":[0,0],"timeline":)";
+  EXPECT_NE(errorOf(put("tl1.json", head + R"(3}]})")).find("robots[0].timeline: expected an array"), std::string::npos);
+  EXPECT_NE(errorOf(put("tl2.json", head + R"([[0,0,0],[1,2]]}]})")).find("robots[0].timeline[1]: expected [t, x, y]"), std::string::npos);
+  EXPECT_NE(errorOf(put("tl3.json", head + R"([[0,0,"a"]]}]})")).find("robots[0].timeline[0][2]: expected a number"), std::string::npos);
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 
 using namespace coverkit;
@@ -78,3 +79,25 @@ TEST(Cells, MatchesBruteForceOnRandomPolygons) {
 }
 
 TEST(Cells, RejectsNonPositiveSize) { EXPECT_ANY_THROW(classifyCells(testing_helpers::boxWith({}), Rational(0))); }
+
+// Sub-cell centres are made from doubles where doubles give them exactly: the same rational and the
+// same double as the rational formula, on dyadic grids, on 0.05 m grids and with huge origins.
+TEST(Cells, CentresAreTheRationalFormulasToTheBit) {
+  const std::vector<std::array<Rational, 3>> grids = {
+      {Rational(0), Rational(0), Rational(1, 2)},        {Rational(-7, 4), Rational(3, 8), Rational(1, 4)},
+      {Rational(1, 20), Rational(-3, 10), Rational(1, 40)}, {Rational(1, 3), Rational(0), Rational(1, 2)},
+      {Rational(1) << 60, Rational(-5), Rational(1, 8)},  {Rational(123456789, 1024), Rational(1, 1024), Rational(3, 64)}};
+  for (const auto& [ox, oy, d] : grids) {
+    const CellGrid g(ox, oy, d, 40, 30);
+    for (int col = 0; col < g.subCols(); col += 7)
+      for (int row = 0; row < g.subRows(); row += 5) {
+        const Rational x = ox + d * (2 * col + 1) / 2, y = oy + d * (2 * row + 1) / 2;
+        const Point p = g.subCenter(col, row);
+        ASSERT_EQ(p.x, x) << ox << " " << d << " col " << col;
+        ASSERT_EQ(p.y, y) << oy << " " << d << " row " << row;
+        const PointD q = g.subCenterD(col, row);
+        ASSERT_EQ(q.x, toDouble(x));
+        ASSERT_EQ(q.y, toDouble(y));
+      }
+  }
+}

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace coverkit;
 
@@ -40,4 +41,12 @@ TEST(Rational, RoundTowardNeverCrossesAway) {
     EXPECT_LE(Rational(dn), q);
     if (up != dn) EXPECT_EQ(std::nextafter(dn, 1e9), up);  // adjacent doubles, or q itself
   }
+}
+
+// A rational beyond the doubles' range becomes ±infinity (it used to abort inside GMP while
+// comparing with the neighbours of infinity); the largest double stays itself.
+TEST(Rational, ToDoubleBeyondTheRangeIsInfinite) {
+  EXPECT_EQ(toDouble(parseRational("1e999")), HUGE_VAL);
+  EXPECT_EQ(toDouble(parseRational("-1e999")), -HUGE_VAL);
+  EXPECT_EQ(toDouble(Rational(std::numeric_limits<double>::max())), std::numeric_limits<double>::max());
 }

@@ -4,6 +4,7 @@
 // decide are skipped and counted).
 #include <coverkit/geometry/cell_grid.h>
 #include <coverkit/geometry/metrics.h>
+#include <coverkit/geometry/rational.h>
 #include <coverkit/geometry/validate.h>
 
 #include <gtest/gtest.h>
@@ -250,4 +251,60 @@ TEST(ValidatorExtreme, PropertyFarLinesAndArcsAgreeWithAnIndependentVerdict) {
   EXPECT_GT(checked, 5 * skipped);
   RecordProperty("checked", checked);
   RecordProperty("skipped", skipped);
+}
+
+namespace {
+/// An arc's swept angle from exact rationals, as the library defined it before its doubles fast
+/// path: the signed angle from the exact cross and dot products, atan of their ratio truncated.
+double sweepFromRationals(const PathSegment& s) {
+  if (s.from.x == s.to.x && s.from.y == s.to.y) return 2 * M_PI;
+  const Rational cx = exactFromDouble(s.center.x), cy = exactFromDouble(s.center.y);
+  const Rational ux = exactFromDouble(s.from.x) - cx, uy = exactFromDouble(s.from.y) - cy;
+  const Rational vx = exactFromDouble(s.to.x) - cx, vy = exactFromDouble(s.to.y) - cy;
+  const Rational cr = ux * vy - uy * vx, dt = ux * vx + uy * vy;
+  double th;
+  if (sgn(cr) == 0) th = sgn(dt) >= 0 ? 0 : M_PI;
+  else if (sgn(dt) == 0) th = sgn(cr) > 0 ? M_PI / 2 : -M_PI / 2;
+  else {
+    const double t = std::atan(std::abs(Rational(cr / dt).get_d()));
+    th = sgn(cr) > 0 ? (sgn(dt) > 0 ? t : M_PI - t) : -(sgn(dt) > 0 ? t : M_PI - t);
+  }
+  if (s.ccw) return th >= 0 ? th : 2 * M_PI + th;
+  return th <= 0 ? -th : 2 * M_PI - th;
+}
+}  // namespace
+
+TEST(ValidatorExtreme, ArcLengthInDoublesIsTheExactAnglesToTheBit) {
+  // grid-map arcs (ends and centres on multiples of 2^-k, where doubles give the products exactly),
+  // arbitrary doubles (where they do not) and huge and tiny magnitudes: the length is the rational
+  // computation's to the bit, the angle truncated exactly as mpq_get_d truncates
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> small(-4000, 4000), shift(0, 6), sign(0, 1);
+  std::uniform_real_distribution<double> any(-1e3, 1e3), expo(-300, 300);
+  int checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    PointD c, a, b;
+    const int kind = i % 4;
+    auto pick = [&]() -> double {
+      if (kind == 0) return std::ldexp(small(rng), -shift(rng));
+      if (kind == 1) return any(rng);
+      if (kind == 2) return (sign(rng) ? 1 : -1) * std::pow(10.0, expo(rng));
+      return 0.05 * small(rng);   // a 0.05 m map's coordinates
+    };
+    c = {pick(), pick()};
+    a = {pick(), pick()};
+    b = {pick(), pick()};
+    if (kind == 0 && i % 8 == 0) b = {c.x - (a.y - c.y), c.y + (a.x - c.x)};   // a quarter turn exactly
+    if (kind == 0 && i % 16 == 4) b = {2 * c.x - a.x, 2 * c.y - a.y};          // a half turn exactly
+    for (bool ccw : {true, false}) {
+      const PathSegment s = PathSegment::arc(a, b, c, ccw);
+      const double rad = std::hypot(a.x - c.x, a.y - c.y);
+      if (!std::isfinite(rad)) continue;
+      const double want = rad * sweepFromRationals(s);
+      ASSERT_EQ(s.length(), want) << std::setprecision(17) << "arc (" << a.x << "," << a.y << ") -> (" << b.x << ","
+                                  << b.y << ") about (" << c.x << "," << c.y << ")" << (ccw ? " ccw" : " cw");
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 30000);
 }

@@ -184,7 +184,9 @@ TEST(Validator, PiecesAsDoublesAtExactlyRGetTheExactTestsVerdict) {
     const double d = off[rng() % 5];
     const double along0 = hx - 3 + static_cast<double>(rng() % 8) * 0.5, along1 = along0 + 0.5 + static_cast<double>(rng() % 6);
     PointD a, b;
-    switch (rng() % 4) {
+    const double diag[] = {0.25, 0.375, std::nextafter(0.375, 0.0), 0.5};
+    switch (rng() % 5) {
+      case 4: a = b = {hx - diag[rng() % 4], hy - diag[rng() % 4]}; break;   // a point off the corner (both gaps)
       case 0: a = {along0, hy - d}; b = {along1, hy - d}; break;                 // below, along the bottom edge
       case 1: a = {hx + 1 + d, hy - 2 + along0 - hx}; b = {hx + 1 + d, hy - 2 + along1 - hx}; break;  // right side
       case 2: a = {hx - d, hy - 2}; b = {hx - d - 1e-9, hy + 3}; break;          // left, slightly slanted

@@ -132,7 +132,7 @@ std::string planRun(bool grid, const std::string& planner, bool coverable, unsig
 /// decomposition's frame), the exact rotation and the C-space's area.
 std::string decompositionRun(const std::string& method, const std::string& direction) {
   const World w = world(false);
-  const Problem problem{w.workspace, {{w.radius, std::nullopt}}, std::nullopt};
+  const Problem problem{w.workspace, {{w.radius, std::nullopt}}, std::nullopt, {}};
   const planners::Decomposed d = planners::runDecomposition(method, problem, {{"direction", direction}});
   datasets::CellsDocument doc;
   doc.method = method;

@@ -62,7 +62,7 @@ TEST(Decompositions, EveryRegisteredModelKeepsTheContract) {
         SCOPED_TRACE(name + " on " + label + " direction " + direction);
         std::map<std::string, std::string> params;
         if (caps.rotatable) params["direction"] = direction;
-        Problem problem{w, {{Rational(2, 5), std::nullopt}}, std::nullopt};
+        Problem problem{w, {{Rational(2, 5), std::nullopt}}, std::nullopt, {}};
         const planners::Decomposed d = planners::runDecomposition(name, problem, params);
         ASSERT_TRUE(d.space);
         const DecompositionCheck k = checkDecomposition(d.cells, *d.space);
@@ -78,7 +78,7 @@ TEST(Decompositions, EveryRegisteredModelKeepsTheContract) {
 TEST(Decompositions, BoustrophedonNeverHasMoreCellsThanTrapezoidal) {
   for (const auto& [label, w] : worlds())
     for (const std::string direction : {"0", "15", "90", "-60"}) {
-      Problem problem{w, {{Rational(1, 4), std::nullopt}}, std::nullopt};
+      Problem problem{w, {{Rational(1, 4), std::nullopt}}, std::nullopt, {}};
       const auto b = planners::runDecomposition("boustrophedon", problem, {{"direction", direction}});
       const auto t = planners::runDecomposition("trapezoidal", problem, {{"direction", direction}});
       EXPECT_LE(b.cells.cells.size(), t.cells.cells.size()) << label << " " << direction;
@@ -100,13 +100,13 @@ TEST(Decompositions, RotationsAreExactAndNearest) {
 }
 
 TEST(Decompositions, BadInputIsRefused) {
-  Problem problem{testing_helpers::boxWith({}), {{Rational(1, 2), std::nullopt}}, std::nullopt};
+  Problem problem{testing_helpers::boxWith({}), {{Rational(1, 2), std::nullopt}}, std::nullopt, {}};
   EXPECT_THROW(planners::runDecomposition("no_such_method", problem, {}), InputError);
   EXPECT_THROW(planners::runDecomposition("boustrophedon", problem, {{"direction", "north"}}), InputError);
   EXPECT_THROW(planners::runDecomposition("boustrophedon", problem, {{"direction", "400"}}), InputError);
   EXPECT_THROW(planners::runDecomposition("grid", problem, {{"no_such_parameter", "1"}}), InputError);
   // a robot wider than the workspace: no cells (the command line turns that into an error)
-  Problem huge{testing_helpers::boxWith({}), {{Rational(6), std::nullopt}}, std::nullopt};
+  Problem huge{testing_helpers::boxWith({}), {{Rational(6), std::nullopt}}, std::nullopt, {}};
   EXPECT_TRUE(planners::runDecomposition("boustrophedon", huge, {}).cells.cells.empty());
 }
 
@@ -116,7 +116,7 @@ TEST(Decompositions, BadInputIsRefused) {
 // the doubles beside the wall's line: 2-6 % of the boustrophedon cells' vertices here) and slivers.
 TEST(Decompositions, SampledCellsLieInTheirExactCells) {
   for (const auto& [label, w] : worlds()) {
-    Problem problem{w, {{Rational(2, 5), std::nullopt}}, std::nullopt};
+    Problem problem{w, {{Rational(2, 5), std::nullopt}}, std::nullopt, {}};
     for (const std::string method : {"boustrophedon", "grid", "trapezoidal"}) {
       const planners::Decomposed d =
           planners::runDecomposition(method, problem, method == "trapezoidal" ? std::map<std::string, std::string>{{"direction", "25"}}

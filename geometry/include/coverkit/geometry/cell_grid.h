@@ -62,6 +62,7 @@ public:
 private:
   Rational ox_, oy_, d_;
   double oxd_ = 0, oyd_ = 0, dd_ = 0;
+  bool exactD_ = false;   ///< the origin and the sub-cell size are doubles exactly
   int mc_ = 0, mr_ = 0;
   std::vector<CellState> sub_;
 };

@@ -68,6 +68,18 @@ struct Metrics {
   double maxCurvature = 0;             ///< largest 1/ρ over the arcs (1/m); corners are turns, not curvature
   double robotTime = 0;                ///< the slowest robot's traversal time, differential drive (s)
   std::size_t segments = 0;
+  /// A timed plan's figures (docs/multi-robot.md), from the timelines' entries and the sub-cells
+  /// their places lie in; only when some path has a timeline.
+  bool hasTeam = false;
+  std::size_t robots = 0;
+  double makespan = 0;                 ///< the latest last entry's time (s)
+  double sumOfTimes = 0;               ///< Σ of each robot's last entry's time (s)
+  std::size_t steps = 0;               ///< moves between entries at different places, all robots (A1)
+  std::size_t repeatedSteps = 0;       ///< of those, moves into a sub-cell some robot had entered before (A2)
+  double coverageRate = 0;             ///< (A1 − A2) / free sub-cells: the Multi-ST paper's Equation (3)
+  double iterationRate = 0;            ///< A2 / A1: the paper's iteration rate
+  std::size_t mostCells = 0, leastCells = 0;   ///< distinct sub-cells entered by the busiest and the idlest robot
+  double balance = 0;                  ///< most / mean distinct sub-cells entered per robot (1: even)
   /// Wall seconds per part ("sub-cells, length, turns", "covered area", "coverable region"): for
   /// `--timings`, never written to a file.
   std::vector<std::pair<std::string, double>> seconds;

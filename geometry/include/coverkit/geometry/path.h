@@ -23,9 +23,20 @@ struct PathSegment {
   double length() const;
 };
 
+/// A place at a time: the robot centre (or a moving obstacle's) is at `p` at `t` seconds.
+struct TimedPoint {
+  double t = 0;
+  PointD p;
+};
+
 struct Path {
   PointD start;
   std::vector<PathSegment> segments;
+  /// A timed plan's motion (empty: untimed): from t = 0 at `start`, times strictly increasing, the
+  /// robot moving linearly between consecutive entries (an equal place is a wait) along `segments`,
+  /// and staying at the last entry's place afterwards. Needed for every robot of a team and with
+  /// moving obstacles (docs/multi-robot.md).
+  std::vector<TimedPoint> timeline;
   /// A polyline through the points (line segments), starting at the first.
   static Path fromPoints(const std::vector<PointD>& points);
   double length() const;
@@ -43,11 +54,21 @@ struct Robot {
   std::optional<Point> start;      ///< none: the documented default start is used
 };
 
+/// A disc of radius `radius` moving linearly between its waypoints (times strictly increasing), at its
+/// first waypoint before that one's time and at its last one after (coverkit.scenario/1).
+struct MovingObstacle {
+  Rational radius;
+  std::vector<TimedPoint> waypoints;
+  /// Where it is at time t (doubles; the validator interpolates exactly).
+  PointD at(double t) const;
+};
+
 /// One planning problem. D (sub-cell size) is 2r unless set.
 struct Problem {
   Workspace workspace;
   std::vector<Robot> robots;
   std::optional<Rational> cellSize;
+  std::vector<MovingObstacle> movingObstacles;   ///< none: a static world
   Rational subCellSize() const { return cellSize ? *cellSize : Rational(2 * robots.at(0).radius); }
 };
 

@@ -50,6 +50,11 @@ ValidationReport validatePaths(const Problem& problem, const std::vector<Path>& 
 /// interior (distance to every boundary edge ≥ r, and a inside W). Exposed for tests and planners.
 bool segmentClear(const Workspace& w, const Rational& r, const Point& a, const Point& b);
 
+/// Whether a disc centre moving linearly from a (at time t0) to b (at t1 ≥ t0; a == b: waiting)
+/// stays at least minDist from moving obstacle m throughout [t0, t1] (t1 = +inf: held at b from t0
+/// on), decided exactly as the team validator decides it. For planners that time their moves.
+bool movesClearOf(PointD a, PointD b, double t0, double t1, const MovingObstacle& m, const Rational& minDist);
+
 /// segmentClear for many segments of one workspace and radius: the edge index is built once.
 /// `clear` does not test that a lies in W (planners that call it know it does); the rest is exact.
 /// Edges near the piece are first bounded with interval arithmetic and only the undecided ones are

@@ -6,6 +6,7 @@
 //  - GridAStar: shortest paths, 4- or 8-connected (TRACC, BSA).
 //  - gridComponents: the 4-connected components (the flood fill: the default start's largest
 //    component, the grid-map polygoniser's regions, the BSA experiment's walled-in starts).
+//  - gridDistances: breadth-first step counts from a set of cells (multi_stc_balanced, spreadStarts).
 //
 // Plain arrays, not Boost.Graph: on grids Boost.Graph measured 5-12x slower than plain arrays
 // (spanning_tree.h; docs/performance.md has the figures), and a grid needs no adjacency lists.
@@ -134,6 +135,30 @@ std::vector<int> gridComponents(int cols, int rows, Passable passable) {
     ++count;
   }
   return label;
+}
+
+/// Breadth-first step counts, 4-connected, from the cells `sources` (distance 0) through cells where
+/// `passable(cell)` holds (asked only of the neighbours reached; the sources themselves need not be
+/// passable): per cell its distance, or -1 where unreached. O(cells reached). A multi-robot planner's
+/// travel lengths, its A*'s heuristic, the spread of starts.
+template <class Passable>
+std::vector<int> gridDistances(int cols, int rows, const std::vector<long>& sources, Passable passable) {
+  std::vector<int> dist(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), -1);
+  std::vector<long> queue;
+  for (long s : sources)
+    if (dist[static_cast<std::size_t>(s)] < 0) dist[static_cast<std::size_t>(s)] = 0, queue.push_back(s);
+  for (std::size_t h = 0; h < queue.size(); ++h) {
+    const int c = static_cast<int>(queue[h] % cols), r = static_cast<int>(queue[h] / cols);
+    const int nb[4][2] = {{c + 1, r}, {c - 1, r}, {c, r + 1}, {c, r - 1}};
+    for (const auto& x : nb) {
+      if (x[0] < 0 || x[1] < 0 || x[0] >= cols || x[1] >= rows) continue;
+      const long w = static_cast<long>(x[1]) * cols + x[0];
+      if (dist[static_cast<std::size_t>(w)] >= 0 || !passable(static_cast<int>(w))) continue;
+      dist[static_cast<std::size_t>(w)] = dist[static_cast<std::size_t>(queue[h])] + 1;
+      queue.push_back(w);
+    }
+  }
+  return dist;
 }
 
 }  // namespace coverkit::graph

@@ -13,11 +13,12 @@
 
 namespace coverkit::planners {
 
-enum class ParamType { kInt, kDouble, kBool, kChoice };
+enum class ParamType { kInt, kDouble, kBool, kChoice, kPath };
 const char* toString(ParamType t);
 
 /// A declared parameter. `range` is "lo:hi" for numbers (inclusive), "lo:hi|word|..." for a number or
-/// one of the words (direction=best), or "a|b|c" for choices.
+/// one of the words (direction=best), or "a|b|c" for choices. A kPath value is one of its range's
+/// words or the path of a file (any other non-empty text; the planner reads it and names it in errors).
 struct ParamSpec {
   std::string name;
   ParamType type = ParamType::kDouble;
@@ -103,6 +104,16 @@ PlanningContext makeContext(Problem problem);
 /// of free sub-cells. Nothing free: nullopt. The point is the double nearest the centre on the side
 /// of its mega-cell's centre, read exactly, so a path file can state it exactly.
 std::optional<Point> defaultStart(const CellGrid& cells);
+/// Where STC puts the robot in sub-cell (col, row) of a free mega-cell: the double next to the
+/// sub-cell's centre towards its mega-cell's centre (x depends on the column only, y on the row).
+PointD stcWaypoint(const CellGrid& cells, int col, int row);
+/// Starts for the robots of a team that have none (deterministic farthest-point placement): the
+/// first at the default start unless some robot has a start; each next at the centre (as STC places
+/// it) of the sub-cell of a free mega-cell that is farthest, in 4-connected steps over such
+/// sub-cells, from the starts placed so far (the first in row order among equals). InputError when
+/// the reachable sub-cells run out. Sub-cells within r + ρ of a moving obstacle's first place are
+/// passed over. makeContext calls it for problems of several robots.
+void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::vector<MovingObstacle>& obstacles = {});
 
 class Planner {
 public:

@@ -7,7 +7,9 @@
 #include <coverkit/geometry/types.h>
 #include <coverkit/graph/grid_graph.h>
 
+#include <array>
 #include <cstdlib>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -106,6 +108,59 @@ private:
   int col_ = -1, row_ = -1;
   std::size_t queries_ = 0;
   std::vector<std::vector<RingRef>> near_;   ///< per mega-cell (row-major)
+};
+
+/// What a Multi-ST robot senses (multi_st): the four sub-cells of its own mega-cell and of the four
+/// mega-cells next to it, and whether a move between 4-neighbouring sub-cells (or a wait) near it
+/// is clear of the moving obstacles over a step of the next few (a proximity sensor that tracks
+/// what moves near it and predicts it over `horizon` steps; the answer is the validator's exact test
+/// on the obstacles' motion over that step). Questions about any other mega-cell, moves that start
+/// more than `horizon` sub-cells from the robot, and jumps throw std::logic_error; every question is
+/// counted. Robots share what they sensed and where they are (the paper's server and shared visited
+/// array); nothing else of the world reaches the planner.
+class TeamSensor {
+public:
+  using MoveCheck = std::function<bool(std::size_t robot, CellIndex from, CellIndex to, long step)>;
+  TeamSensor(const CellGrid& cells, std::vector<CellIndex> at, MoveCheck moveClear, int horizon = 6)
+      : cells_(cells), at_(std::move(at)), moveClear_(std::move(moveClear)), horizon_(horizon) {}
+  /// The states of mega-cell (mc, mr)'s sub-cells (quadrants 0 bottom-left, 1 bottom-right, 2 top-
+  /// right, 3 top-left); outside the grid: all blocked.
+  std::array<CellState, 4> megaCell(std::size_t robot, int mc, int mr) {
+    const CellIndex h = at_.at(robot);
+    if (std::abs(h.col / 2 - mc) + std::abs(h.row / 2 - mr) > 1)
+      throw std::logic_error("sensor: asked about a mega-cell that is neither the robot's nor next to it");
+    ++queries_;
+    std::array<CellState, 4> out{};
+    for (int q = 0; q < 4; ++q) {
+      const int c = 2 * mc + (q == 1 || q == 2 ? 1 : 0), r = 2 * mr + (q >= 2 ? 1 : 0);
+      out[static_cast<std::size_t>(q)] = cells_.insideSub(c, r) ? cells_.sub(c, r) : CellState::kBlocked;
+    }
+    return out;
+  }
+  /// Is a move from `from` to `to` (equal: a wait) over step `step` clear of the moving obstacles?
+  bool moveClear(std::size_t robot, CellIndex from, CellIndex to, long step) {
+    const CellIndex h = at_.at(robot);
+    if (std::abs(h.col - from.col) + std::abs(h.row - from.row) > horizon_ || std::abs(from.col - to.col) + std::abs(from.row - to.row) > 1)
+      throw std::logic_error("sensor: asked about a move beyond the robot's neighbourhood");
+    ++queries_;
+    return moveClear_(robot, from, to, step);
+  }
+  void moveTo(std::size_t robot, CellIndex to) {
+    const CellIndex h = at_.at(robot);
+    if (std::abs(h.col - to.col) + std::abs(h.row - to.row) > 1 || !cells_.insideSub(to.col, to.row) || cells_.sub(to.col, to.row) != CellState::kFree)
+      throw std::logic_error("sensor: the robot cannot jump to a cell that is not a free neighbour");
+    at_[robot] = to;
+  }
+  CellIndex here(std::size_t robot) const { return at_.at(robot); }
+  int horizon() const { return horizon_; }
+  std::size_t queries() const { return queries_; }
+
+private:
+  const CellGrid& cells_;
+  std::vector<CellIndex> at_;
+  MoveCheck moveClear_;
+  int horizon_;
+  std::size_t queries_ = 0;
 };
 
 }  // namespace coverkit::planners

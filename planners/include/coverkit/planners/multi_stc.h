@@ -1,0 +1,37 @@
+#pragma once
+// Multi-robot coverage planners (docs/multi-robot.md). See multi_stc.cpp for the construction and
+// its decisions.
+#include <coverkit/planners/planner.h>
+
+namespace coverkit::planners {
+
+/// The balanced baseline: one STC tour shared by the team, cut into a stretch around each robot's
+/// start so that the makespan is least; timed in steps, collision-free by construction (offline,
+/// static worlds).
+class MultiStcBalancedPlanner : public Planner {
+public:
+  std::string name() const override { return "multi_stc_balanced"; }
+  std::string description() const override;
+  std::vector<ParamSpec> params() const override;
+  Capabilities capabilities() const override;
+  Plan plan(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop) override;
+};
+
+class TeamSensor;
+
+/// Multi-ST (Pham et al.): online and step-synchronous; the robots grow disjoint spanning trees on
+/// the shared mega-cell grid, sense only their neighbourhood (TeamSensor) and consult a rule
+/// knowledge base when a robot or a moving obstacle is in the way.
+class MultiStPlanner : public Planner {
+public:
+  std::string name() const override { return "multi_st"; }
+  std::string description() const override;
+  std::vector<ParamSpec> params() const override;
+  Capabilities capabilities() const override;
+  Plan plan(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop) override;
+  /// The same with the caller's sensor (tests: a sensor that throws on any question outside the
+  /// robots' neighbourhood, started at the robots' start sub-cells); null: the planner's own.
+  Plan planWith(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop, TeamSensor* sensor);
+};
+
+}  // namespace coverkit::planners

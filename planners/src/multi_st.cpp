@@ -1,0 +1,878 @@
+// multi_st: the Multi-ST planner (online, step-synchronous): k robots grow disjoint spanning trees
+// on the shared mega-cell grid, each walking round its own tree, with a rule knowledge base for the
+// robots and moving obstacles they meet (docs/multi-robot.md).
+//
+// Reference: H. V. Pham, P. Moore et al., "Multi-ST: a multi-robot coverage path planning model with
+// spiral spanning trees and knowledge-based reasoning" (../shared/papers/multi-st_pham-et-al.txt):
+// sections 3.2-3.4 (online ST, FSST), 5.1-5.3 (the shared visited array, the stack, the knowledge
+// base) and 7 (time = steps × 100 ms, coverage rate (A1 − A2)/A, iteration rate). The paper gives
+// pseudo-code but not every rule; where it is vague or inconsistent we decided:
+//  * Scan order. The paper says "counter-clockwise (up, left, down, right)" in 3.2 and "clockwise
+//    (up-left-down-right)" in 5.2; up-left-down-right is counter-clockwise, so counter-clockwise it
+//    is, starting after the parent, as Spiral-STC does. The robot walks round each mega-cell's four
+//    sub-cells counter-clockwise and, at the sub-cell where the walk turns away from a side, looks
+//    at the mega-cell across that side (sub-cell q = 0 bottom-left … 3 top-left looks in direction
+//    q + 3: south, east, north, west); a free, unclaimed one becomes its child: claimed in the
+//    shared visited array, entered, walked round, and left back into the parent's next sub-cell.
+//    That is STC's walk round the tree, made one step at a time. The root is walked round once and
+//    the robot returns to its first sub-cell (the paper's step 4).
+//  * Claims. Robots decide in index order within a step; a mega-cell is claimed by the first that
+//    decides to enter it, so two trees never share a mega-cell (the paper's Fig 6 rule: a robot
+//    does not enter a mega-cell already in the visited array).
+//  * Partially occupied mega-cells (FSST). They are never tree nodes. When the walk passes a free
+//    sub-cell of a partially occupied neighbour, the robot steps into it and through the free
+//    sub-cells of that mega-cell it can reach inside it, and back (Full-STC's single-sided edge to
+//    a leaf); everything else is reached by travel (next point).
+//  * Travel. A robot whose tree is done goes, by a shortest way over the sub-cells the team has
+//    sensed free, to the nearest sub-cell that is either in a sensed free mega-cell nobody has
+//    claimed (it claims it there and grows a new tree) or sensed free and never entered; none left:
+//    it stays. Targets are reserved, one robot each. Every sub-cell a robot enters gets its
+//    mega-cell and the four next to it sensed, so every free sub-cell reachable from the starts
+//    becomes known and is entered: the team covers everything reachable (the issue's requirement;
+//    the paper's robots stop when their trees are done and leave what the other trees cut off).
+//  * Steps. One step moves a robot to a 4-neighbouring sub-cell centre or keeps it in place (as
+//    multi_stc_balanced); in the first step each robot moves from its start to its sub-cell's
+//    centre. A robot never enters a sub-cell another robot is in or will be in at the next step,
+//    nor leaves one another robot enters at the next step, so any two robots stay at least D = 2r
+//    apart (the validator checks every plan exactly).
+//  * The knowledge base (knowledge_base.h; the shipped rules are planners/data/multi_st_kb.yaml).
+//    The paper's Tables 2-3 did not survive; its text names the events (an obstacle or a robot in
+//    the cell ahead; blocked for some steps), the ECA form and weights updated from outcomes (its
+//    steps 6-7, equation 2 without its membership functions). A refused move is an event; the
+//    heaviest matching rule fires; its weight moves towards 1 when the robot moves within
+//    outcome_steps steps, towards 0 otherwise (each robot its own weights). Actions: wait; detour
+//    (a shortest way of at most 12 moves over sensed free sub-cells round the blocked one to the
+//    waypoint after it; on the walk round a tree the blocked sub-cell is left for later); give_way
+//    (step to a free neighbour off the other robot's way and come back); skip (leave the blocked
+//    cell for later: a child not entered is released, a target given up for 20 steps).
+//  * kb=off is the paper's baseline: a blocked robot waits until the cell clears. Two robots that
+//    wait for each other then wait for ever: the run stops when no robot has moved for 200 steps
+//    after the last obstacle has stopped (status partial_coverage, the deadlock named).
+//  * Built-in reflexes, not rules: a robot whose own place is not clear of a moving obstacle over the
+//    next step moves to the first neighbour that is (a wait would be a collision); a robot with
+//    nothing to do that stands in another's way steps aside.
+//  * What cannot be reached: a target given up three times (an obstacle parked on it) is left;
+//    free sub-cells sensed but never entered are counted (statistic subcells_skipped, status
+//    partial_coverage).
+#include <coverkit/planners/multi_stc.h>
+
+#include "team_steps.h"
+#include "walk_path.h"
+
+#include <coverkit/geometry/error.h>
+#include <coverkit/planners/knowledge_base.h>
+#include <coverkit/planners/sensor.h>
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <map>
+#include <memory>
+
+namespace coverkit::planners {
+
+namespace {
+
+constexpr int kDetourMoves = 12;
+constexpr long kDeferSteps = 20;
+constexpr int kGiveUpAfter = 3;
+constexpr long kStallSteps = 200;
+
+// directions 0 east, 1 north, 2 west, 3 south (graph::kDx, kDy)
+constexpr int kDc[4] = {1, 0, -1, 0}, kDr[4] = {0, 1, 0, -1};
+
+enum class Tag { kTree, kCross, kSide, kTravel, kDetour, kAside };
+
+struct Waypoint {
+  long cell;
+  Tag tag;
+};
+
+struct Frame {
+  long mega;        ///< mr * megaCols + mc
+  int entry;        ///< the quadrant the robot entered it at
+  int parentDir;    ///< direction to the parent mega-cell, -1 at a root
+  int k = 0;        ///< quadrants processed: the robot is at quadrant (entry + k) % 4
+};
+
+enum class Mode { kTree, kTravel, kIdle };
+
+struct RobotState {
+  long cell = -1;
+  std::deque<Waypoint> queue;
+  std::vector<Frame> stack;
+  Mode mode = Mode::kTree;
+  long target = -1;
+  int blocked = 0;
+  int pendingRule = -1;
+  long pendingSince = 0;
+  std::vector<double> weights;
+  std::vector<CellIndex> route;   ///< the cell at each step from step 1
+  std::map<long, long> deferredUntil;
+  std::map<long, int> gaveUp;
+  bool nudged = false;
+  long lastChecked = -1;          ///< knowledge version of its last target search (idle robots)
+  std::size_t cellsEntered = 0;
+};
+
+class Team {
+public:
+  Team(const PlanningContext& ctx, const StepTiming& timing, const KnowledgeBase& kb, bool kbOn, TeamSensor& sensor)
+      : ctx_(ctx), cells_(ctx.cells), timing_(timing), kb_(kb), kbOn_(kbOn), sensor_(sensor),
+        moving_(!ctx.problem.movingObstacles.empty()), horizon_(sensor.horizon()),
+        cols_(cells_.subCols()), rows_(cells_.subRows()), mcols_(cells_.megaCols()),
+        known_(static_cast<std::size_t>(cols_) * rows_, -1), entered_(known_.size(), -1),
+        megaKnown_(cells_.megaCount(), -1), owner_(cells_.megaCount(), -1) {}
+
+  /// Runs the team from its start cells; returns the status and fills the statistics.
+  PlanStatus run(const std::vector<CellIndex>& starts, const TerminationCondition& stop, Plan& plan);
+
+  const std::vector<RobotState>& robots() const { return robots_; }
+
+private:
+  long id(int c, int r) const { return static_cast<long>(r) * cols_ + c; }
+  int colOf(long v) const { return static_cast<int>(v % cols_); }
+  int rowOf(long v) const { return static_cast<int>(v / cols_); }
+  CellIndex cellOf(long v) const { return {colOf(v), rowOf(v)}; }
+  long megaOf(long v) const { return static_cast<long>(rowOf(v) / 2) * mcols_ + colOf(v) / 2; }
+  static int quadrantOf(int c, int r) {
+    const int qc = c & 1, qr = r & 1;
+    return qr == 0 ? qc : 3 - qc;
+  }
+  long subOf(long mega, int q) const {
+    const int mc = static_cast<int>(mega % mcols_), mr = static_cast<int>(mega / mcols_);
+    return id(2 * mc + (q == 1 || q == 2 ? 1 : 0), 2 * mr + (q >= 2 ? 1 : 0));
+  }
+  long step(long v, int d) const {
+    const int c = colOf(v) + kDc[d], r = rowOf(v) + kDr[d];
+    return c >= 0 && r >= 0 && c < cols_ && r < rows_ ? id(c, r) : -1;
+  }
+  bool knownFree(long v) const { return v >= 0 && known_[static_cast<std::size_t>(v)] == 1; }
+  bool megaFull(long m) const { return megaKnown_[static_cast<std::size_t>(m)] == 4; }
+
+  void sense(std::size_t i);
+  void enter(std::size_t i, long v, long t);
+  void nextWaypoints(std::size_t i);
+  void pushMoveOn(std::size_t i);
+  bool findTarget(std::size_t i, long t);
+  bool occupied(std::size_t self, long v) const;
+  bool allowed(std::size_t self, long from, long to) const;
+  int blockerOf(std::size_t self, long v) const;
+  std::vector<long> shortestWay(std::size_t self, long from, long goal, long avoid, int limit) const;
+  bool act(std::size_t i, KbAction a, long t, int blocker);
+  bool detour(std::size_t i);
+  bool skip(std::size_t i, long t);
+  bool stepAside(std::size_t i, long avoid, bool comeBack, long t);
+  bool stayClear(std::size_t i, long cell, long t, int steps);
+  bool safeMove(std::size_t i, long from, long to, long t);
+  long flee(std::size_t i, long t);
+  void release(std::size_t i);
+
+  const PlanningContext& ctx_;
+  const CellGrid& cells_;   // sizes and coordinates only: what is free comes from the sensor
+  const StepTiming& timing_;
+  const KnowledgeBase& kb_;
+  bool kbOn_;
+  TeamSensor& sensor_;
+  bool moving_;
+  int horizon_;
+  int cols_, rows_, mcols_;
+  std::vector<signed char> known_;    ///< per sub-cell: -1 not sensed, 0 blocked, 1 free (the team's map)
+  std::vector<int> entered_;          ///< per sub-cell: the first robot to enter it, -1 none
+  std::vector<signed char> megaKnown_;   ///< per mega-cell: -1 not sensed, else its free sub-cells
+  std::vector<int> owner_;            ///< per mega-cell: the robot whose tree holds it (the shared visited array)
+  std::vector<RobotState> robots_;
+  std::vector<long> next_;            ///< this step's decisions: the cell at t + 1, -1 not decided
+  std::map<long, std::size_t> targetOf_;   ///< reserved travel targets
+  long version_ = 0;                  ///< bumps when a new target may have appeared
+  std::size_t repeats_ = 0, iterations_ = 0, rulesFired_ = 0;
+  std::map<std::string, std::size_t> fired_;
+};
+
+void Team::sense(std::size_t i) {
+  const long v = robots_[i].cell;
+  const int mc = colOf(v) / 2, mr = rowOf(v) / 2;
+  for (int d = -1; d < 4; ++d) {
+    const int c = d < 0 ? mc : mc + kDc[d], r = d < 0 ? mr : mr + kDr[d];
+    if (c < 0 || r < 0 || c >= mcols_ || 2 * r >= rows_) continue;
+    const long m = static_cast<long>(r) * mcols_ + c;
+    if (megaKnown_[static_cast<std::size_t>(m)] >= 0) continue;
+    const std::array<CellState, 4> s = sensor_.megaCell(i, c, r);
+    int free = 0;
+    for (int q = 0; q < 4; ++q) {
+      const bool f = s[static_cast<std::size_t>(q)] == CellState::kFree;
+      known_[static_cast<std::size_t>(subOf(m, q))] = f ? 1 : 0;
+      free += f ? 1 : 0;
+    }
+    megaKnown_[static_cast<std::size_t>(m)] = static_cast<signed char>(free);
+    if (free > 0) ++version_;
+  }
+}
+
+void Team::enter(std::size_t i, long v, long t) {
+  RobotState& R = robots_[i];
+  const long before = R.cell;
+  if (v != before) sensor_.moveTo(i, cellOf(v));
+  R.cell = v;
+  int& e = entered_[static_cast<std::size_t>(v)];
+  if (v != before) {
+    if (e < 0) {
+      e = static_cast<int>(i);
+      ++R.cellsEntered;
+    } else {
+      ++repeats_;
+    }
+  }
+  if (before < 0 || megaOf(before) != megaOf(v)) sense(i);
+  (void)t;
+}
+
+// The move that follows processing the top frame's quadrant k - 1: to quadrant k, or out of the
+// mega-cell (to the parent; a root returns to where it began).
+void Team::pushMoveOn(std::size_t i) {
+  RobotState& R = robots_[i];
+  Frame& f = R.stack.back();
+  if (f.k < 4) {
+    R.queue.push_back({subOf(f.mega, (f.entry + f.k) % 4), Tag::kTree});
+    return;
+  }
+  const Frame done = f;
+  R.stack.pop_back();
+  if (done.parentDir < 0) {
+    R.queue.push_back({subOf(done.mega, done.entry), Tag::kTree});
+    return;
+  }
+  R.queue.push_back({step(subOf(done.mega, (done.entry + 3) % 4), done.parentDir), Tag::kTree});
+}
+
+// The walk round the tree, one decision at a time (the robot is where the top frame says).
+void Team::nextWaypoints(std::size_t i) {
+  RobotState& R = robots_[i];
+  while (R.queue.empty() && !R.stack.empty()) {
+    Frame& f = R.stack.back();
+    if (f.k >= 4) {   // a root walked round and back at its first sub-cell
+      R.stack.pop_back();
+      continue;
+    }
+    const int q = (f.entry + f.k) % 4, d = (q + 3) % 4;
+    const long here = subOf(f.mega, q);
+    ++f.k;
+    if (d != f.parentDir) {
+      const long a = step(here, d);
+      if (a >= 0) {
+        const long y = megaOf(a);
+        if (megaFull(y) && owner_[static_cast<std::size_t>(y)] < 0) {   // a child: claimed, entered, walked round
+          owner_[static_cast<std::size_t>(y)] = static_cast<int>(i);
+          R.stack.push_back({y, quadrantOf(colOf(a), rowOf(a)), (d + 2) % 4, 0});
+          R.queue.push_back({a, Tag::kCross});
+          return;
+        }
+        if (megaKnown_[static_cast<std::size_t>(y)] > 0 && !megaFull(y) && knownFree(a) && entered_[static_cast<std::size_t>(a)] < 0) {
+          // a partially occupied neighbour: through its free sub-cells reachable inside it, and back
+          std::vector<long> out{a};
+          for (std::size_t h = 0; h < out.size(); ++h)
+            for (int e = 0; e < 4; ++e) {
+              const long b = step(out[h], e);
+              if (b >= 0 && megaOf(b) == y && knownFree(b) && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+            }
+          // out-and-back along the (at most three) sub-cells in the order found: each is next to one before it
+          std::vector<long> walk{a};
+          for (std::size_t h = 1; h < out.size(); ++h) {
+            // from the walk's end to out[h] inside y: at most two moves back along the walk
+            while (true) {
+              const long end = walk.back();
+              bool adjacent = false;
+              for (int e = 0; e < 4; ++e) adjacent = adjacent || step(end, e) == out[h];
+              if (adjacent) break;
+              walk.push_back(walk[walk.size() - 2]);
+            }
+            walk.push_back(out[h]);
+          }
+          for (std::size_t h = walk.size() - 1; h-- > 0;) walk.push_back(walk[h]);
+          walk.push_back(here);
+          for (long w : walk) R.queue.push_back({w, Tag::kSide});
+        }
+      }
+    }
+    pushMoveOn(i);
+  }
+}
+
+bool Team::occupied(std::size_t self, long v) const {
+  for (std::size_t j = 0; j < robots_.size(); ++j)
+    if (j != self && (robots_[j].cell == v || next_[j] == v)) return true;
+  return false;
+}
+
+// The step rules: never into a cell another robot is in now or at the next step, never out of one
+// another robot enters at the next step.
+bool Team::allowed(std::size_t self, long from, long to) const {
+  if (to == from) return true;
+  if (occupied(self, to)) return false;
+  for (std::size_t j = 0; j < robots_.size(); ++j)
+    if (j != self && next_[j] == from) return false;
+  return true;
+}
+
+int Team::blockerOf(std::size_t self, long v) const {
+  for (std::size_t j = 0; j < robots_.size(); ++j)
+    if (j != self && (robots_[j].cell == v || next_[j] == v)) return static_cast<int>(j);
+  return -1;
+}
+
+// Breadth-first over sensed free sub-cells, avoiding `avoid` and the cells robots are in; at most
+// `limit` moves (0: no limit). The way after `from`, ending at goal; empty when none.
+std::vector<long> Team::shortestWay(std::size_t self, long from, long goal, long avoid, int limit) const {
+  if (from == goal) return {};
+  std::map<long, long> parent{{from, -1}};
+  std::deque<std::pair<long, int>> open{{from, 0}};
+  while (!open.empty()) {
+    const auto [v, depth] = open.front();
+    open.pop_front();
+    if (limit > 0 && depth >= limit) continue;
+    for (int d = 0; d < 4; ++d) {
+      const long w = step(v, d);
+      if (w < 0 || !knownFree(w) || w == avoid || parent.count(w)) continue;
+      if (w != goal && blockerOf(self, w) >= 0 && limit > 0) continue;
+      parent[w] = v;
+      if (w == goal) {
+        std::vector<long> way;
+        for (long x = goal; x != from; x = parent[x]) way.push_back(x);
+        std::reverse(way.begin(), way.end());
+        return way;
+      }
+      open.push_back({w, depth + 1});
+    }
+  }
+  return {};
+}
+
+// The nearest sub-cell of an unclaimed sensed free mega-cell, or a sensed free one never entered,
+// not reserved by another robot and not deferred; the way there becomes the robot's queue.
+bool Team::findTarget(std::size_t i, long t) {
+  RobotState& R = robots_[i];
+  std::vector<long> parent(known_.size(), -2);
+  std::deque<long> open{R.cell};
+  parent[static_cast<std::size_t>(R.cell)] = -1;
+  while (!open.empty()) {
+    const long v = open.front();
+    open.pop_front();
+    const bool wanted = (megaFull(megaOf(v)) && owner_[static_cast<std::size_t>(megaOf(v))] < 0) || entered_[static_cast<std::size_t>(v)] < 0;
+    const auto reserved = targetOf_.find(v);
+    const auto deferred = R.deferredUntil.find(v);
+    const auto given = R.gaveUp.find(v);
+    if (wanted && (reserved == targetOf_.end() || reserved->second == i) && (deferred == R.deferredUntil.end() || deferred->second <= t) &&
+        (given == R.gaveUp.end() || given->second < kGiveUpAfter)) {
+      R.target = v;
+      targetOf_[v] = i;
+      R.queue.clear();
+      std::vector<long> way;
+      for (long x = v; x != R.cell; x = parent[static_cast<std::size_t>(x)]) way.push_back(x);
+      for (auto it = way.rbegin(); it != way.rend(); ++it) R.queue.push_back({*it, Tag::kTravel});
+      R.mode = Mode::kTravel;
+      return true;
+    }
+    for (int d = 0; d < 4; ++d) {
+      const long w = step(v, d);
+      if (w < 0 || !knownFree(w) || parent[static_cast<std::size_t>(w)] != -2) continue;
+      parent[static_cast<std::size_t>(w)] = v;
+      open.push_back(w);
+    }
+  }
+  return false;
+}
+
+void Team::release(std::size_t i) {
+  RobotState& R = robots_[i];
+  if (R.target >= 0) {
+    const auto it = targetOf_.find(R.target);
+    if (it != targetOf_.end() && it->second == i) targetOf_.erase(it);
+  }
+  R.target = -1;
+}
+
+bool Team::detour(std::size_t i) {
+  RobotState& R = robots_[i];
+  const Waypoint blocked = R.queue.front();
+  if (R.queue.size() < 2) {
+    // on the walk round a tree: leave the blocked quadrant for later and go round it to the next one
+    if (blocked.tag != Tag::kTree || R.stack.empty() || R.stack.back().k >= 4 ||
+        subOf(R.stack.back().mega, (R.stack.back().entry + R.stack.back().k) % 4) != blocked.cell)
+      return false;
+    R.queue.pop_front();
+    ++R.stack.back().k;
+    pushMoveOn(i);
+  } else {
+    R.queue.pop_front();
+  }
+  const long goal = R.queue.front().cell;
+  const std::vector<long> way = shortestWay(i, R.cell, goal, blocked.cell, kDetourMoves);
+  if (way.empty()) {
+    // nothing round it within reach: back as it was, except a quadrant left for later (travel covers it)
+    R.queue.push_front(blocked);
+    return false;
+  }
+  const Waypoint goalWp = R.queue.front();
+  R.queue.pop_front();
+  for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goalWp.tag : Tag::kDetour});
+  return true;
+}
+
+bool Team::skip(std::size_t i, long t) {
+  RobotState& R = robots_[i];
+  const Waypoint blocked = R.queue.front();
+  switch (blocked.tag) {
+    case Tag::kCross: {   // the child is not entered: released for another robot or for later
+      const Frame child = R.stack.back();
+      R.stack.pop_back();
+      owner_[static_cast<std::size_t>(child.mega)] = -1;
+      ++version_;
+      R.queue.pop_front();
+      pushMoveOn(i);
+      return true;
+    }
+    case Tag::kSide: {   // the rest of the side trip is left: straight back to the walk
+      while (!R.queue.empty() && R.queue.front().tag == Tag::kSide) R.queue.pop_front();
+      if (R.queue.empty()) return false;
+      const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, blocked.cell, 0);
+      if (way.empty()) return false;
+      R.queue.pop_front();
+      for (auto it = way.rbegin(); it != way.rend(); ++it) R.queue.push_front({*it, Tag::kDetour});
+      return true;
+    }
+    case Tag::kTravel: {
+      if (R.target >= 0) {
+        R.deferredUntil[R.target] = t + kDeferSteps;
+        ++R.gaveUp[R.target];
+      }
+      release(i);
+      R.queue.clear();
+      R.mode = Mode::kIdle;
+      R.lastChecked = -1;
+      return true;
+    }
+    default:
+      return detour(i);
+  }
+}
+
+// To a free neighbour that no robot is in or enters, not `avoid` and not where the blocking robot
+// goes next; then back.
+bool Team::stepAside(std::size_t i, long avoid, bool comeBack, long t) {
+  RobotState& R = robots_[i];
+  const int b = avoid >= 0 ? blockerOf(i, avoid) : -1;
+  const long theirs = b >= 0 && !robots_[static_cast<std::size_t>(b)].queue.empty() ? robots_[static_cast<std::size_t>(b)].queue.front().cell : -1;
+  for (int d = 0; d < 4; ++d) {
+    const long w = step(R.cell, d);
+    if (w < 0 || !knownFree(w) || w == avoid || w == theirs || !allowed(i, R.cell, w)) continue;
+    if (!safeMove(i, R.cell, w, t)) continue;
+    if (comeBack) R.queue.push_front({R.cell, !R.queue.empty() && R.queue.front().tag == Tag::kTravel ? Tag::kTravel : Tag::kAside});
+    R.queue.push_front({w, Tag::kAside});
+    return true;
+  }
+  return false;
+}
+
+// Staying in `cell` over steps t … t + steps - 1 is clear of the moving obstacles.
+bool Team::stayClear(std::size_t i, long cell, long t, int steps) {
+  for (int j = 0; j < steps; ++j)
+    if (!sensor_.moveClear(i, cellOf(cell), cellOf(cell), t + j)) return false;
+  return true;
+}
+
+// A move the obstacles allow: clear over its step, and the cell it reaches clear to stay in over the
+// sensor's horizon (a robot does not step where an obstacle is about to pass).
+bool Team::safeMove(std::size_t i, long from, long to, long t) {
+  return !moving_ || (sensor_.moveClear(i, cellOf(from), cellOf(to), t) && stayClear(i, to, t + 1, horizon_));
+}
+
+// The robot's place is about to be reached by an obstacle: the first move of a way, found breadth
+// first in space and time over sensed free sub-cells, that stays clear for the sensor's horizon
+// (the first move also keeps the step rules for robots). The robot's own cell when there is none.
+long Team::flee(std::size_t i, long t) {
+  const long from = robots_[i].cell;
+  std::map<std::pair<long, int>, long> parent{{{from, 0}, -1}};
+  std::deque<std::pair<long, int>> open{{from, 0}};
+  while (!open.empty()) {
+    const auto [v, j] = open.front();
+    open.pop_front();
+    if (j == horizon_) {
+      long first = v;
+      for (std::pair<long, int> st{v, j}; st.second > 1; st = {parent[st], st.second - 1}) first = parent[st];
+      return first;
+    }
+    for (int d = -1; d < 4; ++d) {
+      const long w = d < 0 ? v : step(v, d);
+      if (w < 0 || !knownFree(w) || parent.count({w, j + 1})) continue;
+      if (std::abs(colOf(w) - colOf(from)) + std::abs(rowOf(w) - rowOf(from)) > horizon_ - 1) continue;
+      if (j == 0 && !allowed(i, from, w)) continue;
+      if (!sensor_.moveClear(i, cellOf(v), cellOf(w), t + j)) continue;
+      parent[{w, j + 1}] = v;
+      open.push_back({w, j + 1});
+    }
+  }
+  return from;
+}
+
+bool Team::act(std::size_t i, KbAction a, long t, int blocker) {
+  switch (a) {
+    case KbAction::kWait: return false;
+    case KbAction::kDetour: return detour(i);
+    case KbAction::kGiveWay: return stepAside(i, robots_[i].queue.front().cell, true, t);
+    case KbAction::kSkip: return skip(i, t);
+  }
+  (void)blocker;
+  return false;
+}
+
+PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCondition& stop, Plan& plan) {
+  const std::size_t k = starts.size();
+  robots_.assign(k, RobotState{});
+  next_.assign(k, -1);
+  for (std::size_t i = 0; i < k; ++i) {
+    RobotState& R = robots_[i];
+    R.weights.clear();
+    for (const KbRule& r : kb_.rules) R.weights.push_back(r.weight);
+    enter(i, id(starts[i].col, starts[i].row), 0);
+  }
+  // the roots: robots in index order claim their start mega-cells
+  for (std::size_t i = 0; i < k; ++i) {
+    RobotState& R = robots_[i];
+    const long m = megaOf(R.cell);
+    if (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) {
+      owner_[static_cast<std::size_t>(m)] = static_cast<int>(i);
+      R.stack.push_back({m, quadrantOf(colOf(R.cell), rowOf(R.cell)), -1, 0});
+      R.mode = Mode::kTree;
+    } else {
+      R.mode = Mode::kIdle;
+    }
+    R.route.push_back(cellOf(R.cell));   // step 1: onto the start sub-cell's centre
+  }
+  double lastObstacle = 0;
+  for (const MovingObstacle& m : ctx_.problem.movingObstacles) lastObstacle = std::max(lastObstacle, m.waypoints.back().t);
+  std::size_t freeKnownBound = 0;
+  for (int r = 0; r < rows_; ++r)
+    for (int c = 0; c < cols_; ++c) freeKnownBound += cells_.insideSub(c, r) ? 1 : 0;
+  const long maxSteps = 64L * static_cast<long>(freeKnownBound) + static_cast<long>(lastObstacle / timing_.step) + 10'000;
+  long t = 1, lastMove = 1;
+  PlanStatus status = PlanStatus::kExactSolution;
+  std::string why;
+  for (;; ++t) {
+    if ((t & 63) == 0 && stop.expired()) {
+      status = PlanStatus::kTimeout;
+      why = "stopped by the time limit at step " + std::to_string(t);
+      break;
+    }
+    if (t > maxSteps) {
+      status = PlanStatus::kPartialCoverage;
+      why = "stopped after " + std::to_string(maxSteps) + " steps";
+      break;
+    }
+    std::fill(next_.begin(), next_.end(), -1);
+    bool anyWork = false, moved = false;
+    for (std::size_t i = 0; i < k; ++i) {
+      RobotState& R = robots_[i];
+      // what to do next
+      if (R.mode == Mode::kTravel && R.target >= 0) {
+        const long m = megaOf(R.target);
+        const bool stillWanted = (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) || entered_[static_cast<std::size_t>(R.target)] < 0;
+        if (!stillWanted) {
+          release(i);
+          R.queue.clear();
+          R.mode = Mode::kIdle;
+          R.lastChecked = -1;
+        }
+      }
+      if (R.queue.empty() && R.mode == Mode::kTree) {
+        nextWaypoints(i);
+        if (R.queue.empty()) {
+          R.mode = Mode::kIdle;
+          R.lastChecked = -1;
+        }
+      }
+      if (R.queue.empty() && R.mode != Mode::kTree) {
+        if (R.mode == Mode::kTravel) release(i);
+        R.mode = Mode::kIdle;
+        bool due = R.lastChecked != version_;
+        for (const auto& [cell, until] : R.deferredUntil) due = due || until == t;
+        if (due) {
+          R.lastChecked = version_;
+          findTarget(i, t);
+        }
+      }
+      if (R.mode == Mode::kIdle && R.nudged && R.queue.empty()) stepAside(i, -1, false, t);
+      R.nudged = false;
+      if (!R.queue.empty() || R.mode != Mode::kIdle) anyWork = true;
+      // the move
+      long to = R.cell;
+      for (int attempt = 0; attempt < 2 && !R.queue.empty(); ++attempt) {
+        const long want = R.queue.front().cell;
+        if (want == R.cell) {   // already there (a detour that ends where it began)
+          R.queue.pop_front();
+          continue;
+        }
+        const bool robotsOk = allowed(i, R.cell, want);
+        const bool obstaclesOk = robotsOk && safeMove(i, R.cell, want, t);
+        if (robotsOk && obstaclesOk) {
+          to = want;
+          R.queue.pop_front();
+          break;
+        }
+        // an event: the knowledge base decides (kb=off: wait)
+        const int blocker = robotsOk ? -1 : blockerOf(i, want);
+        if (blocker >= 0 && robots_[static_cast<std::size_t>(blocker)].mode == Mode::kIdle && robots_[static_cast<std::size_t>(blocker)].queue.empty())
+          robots_[static_cast<std::size_t>(blocker)].nudged = true;
+        if (attempt > 0 || !kbOn_) break;
+        KbSituation s;
+        s.event = robotsOk ? KbEvent::kObstacleAhead : KbEvent::kRobotAhead;
+        s.blockedSteps = R.blocked;
+        s.otherHasPriority = blocker >= 0 && static_cast<std::size_t>(blocker) < i;
+        s.travelling = R.mode == Mode::kTravel;
+        const int rule = selectRule(kb_, R.weights, s);
+        if (rule < 0) break;
+        ++rulesFired_;
+        ++fired_[kb_.rules[static_cast<std::size_t>(rule)].name];
+        if (R.pendingRule < 0) {
+          R.pendingRule = rule;
+          R.pendingSince = t;
+        }
+        if (!act(i, kb_.rules[static_cast<std::size_t>(rule)].action, t, blocker)) break;
+        if (R.queue.empty() && R.mode == Mode::kTree) nextWaypoints(i);
+      }
+      if (to == R.cell && moving_ && !stayClear(i, R.cell, t, horizon_)) {   // reflex: an obstacle is coming
+        const long w = flee(i, t);
+        if (w != R.cell) {
+          R.queue.push_front({R.cell, R.mode == Mode::kTravel ? Tag::kTravel : Tag::kAside});
+          to = w;
+        }
+      }
+      next_[i] = to;
+      if (to != R.cell) {
+        R.blocked = 0;
+        moved = true;
+        if (R.pendingRule >= 0) {   // the rule fired worked: the robot moves again
+          double& w = R.weights[static_cast<std::size_t>(R.pendingRule)];
+          w += kb_.learningRate * (1 - w);
+          R.pendingRule = -1;
+        }
+      } else if (!R.queue.empty()) {
+        ++R.blocked;
+        if (R.pendingRule >= 0 && t - R.pendingSince >= kb_.outcomeSteps) {
+          double& w = R.weights[static_cast<std::size_t>(R.pendingRule)];
+          w -= kb_.learningRate * w;
+          R.pendingRule = -1;
+        }
+      }
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+      RobotState& R = robots_[i];
+      if (next_[i] != R.cell) {
+        ++iterations_;
+        enter(i, next_[i], t + 1);
+        if (R.mode == Mode::kTravel && R.cell == R.target) {   // arrived: a new tree where the mega-cell is free and unclaimed
+          release(i);
+          R.queue.clear();
+          const long m = megaOf(R.cell);
+          if (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) {
+            owner_[static_cast<std::size_t>(m)] = static_cast<int>(i);
+            R.stack.push_back({m, quadrantOf(colOf(R.cell), rowOf(R.cell)), -1, 0});
+            R.mode = Mode::kTree;
+          } else {
+            R.mode = Mode::kIdle;
+            R.lastChecked = -1;
+          }
+        }
+      }
+      R.route.push_back(cellOf(R.cell));
+    }
+    if (moved) lastMove = t;
+    if (!anyWork && !moved && static_cast<double>(t) * timing_.step > lastObstacle) {
+      // every robot idle with nothing left that it could reach: done
+      bool pending = false;
+      for (const RobotState& R : robots_) pending = pending || !R.deferredUntil.empty();
+      if (!pending) break;
+      bool live = false;
+      for (const RobotState& R : robots_)
+        for (const auto& [cell, until] : R.deferredUntil) live = live || (until > t && R.gaveUp.at(cell) < kGiveUpAfter && entered_[static_cast<std::size_t>(cell)] < 0);
+      if (!live) break;
+    }
+    if (t - lastMove > kStallSteps && static_cast<double>(t) * timing_.step > lastObstacle) {
+      status = PlanStatus::kPartialCoverage;
+      why = kbOn_ ? "no robot could move for " + std::to_string(kStallSteps) + " steps"
+                  : "deadlock: the robots wait for each other (kb=off waits until a cell clears; kb=on resolves it)";
+      break;
+    }
+  }
+  // every robot's route ends where it stays; drop the trailing steps where nobody moved
+  // what was left: sensed free sub-cells joined to the robots over sensed free ones, never entered
+  std::size_t sensedFree = 0, enteredCount = 0;
+  std::vector<char> seen(known_.size(), 0);
+  std::deque<long> open;
+  for (const RobotState& R : robots_)
+    if (!seen[static_cast<std::size_t>(R.cell)]) {
+      seen[static_cast<std::size_t>(R.cell)] = 1;
+      open.push_back(R.cell);
+    }
+  while (!open.empty()) {
+    const long v = open.front();
+    open.pop_front();
+    ++sensedFree;
+    for (int d = 0; d < 4; ++d) {
+      const long w = step(v, d);
+      if (w >= 0 && knownFree(w) && !seen[static_cast<std::size_t>(w)]) {
+        seen[static_cast<std::size_t>(w)] = 1;
+        open.push_back(w);
+      }
+    }
+  }
+  for (std::size_t v = 0; v < known_.size(); ++v) enteredCount += seen[v] && entered_[v] >= 0 ? 1 : 0;
+  const std::size_t skipped = sensedFree - enteredCount;
+  if (status == PlanStatus::kExactSolution && skipped > 0) {
+    status = PlanStatus::kPartialCoverage;
+    why = "left " + std::to_string(skipped) + " free sub-cells that no robot could reach" + (moving_ ? " past the moving obstacles" : "");
+  }
+  plan.message = why.empty() ? "the team entered every free sub-cell reachable from its starts (" + std::to_string(enteredCount) + ")" : why;
+  plan.statistics["subcells_entered"] = static_cast<double>(enteredCount);
+  plan.statistics["subcells_skipped"] = static_cast<double>(skipped);
+  plan.statistics["repeated_steps"] = static_cast<double>(repeats_);
+  plan.statistics["rules_fired"] = static_cast<double>(rulesFired_);
+  plan.statistics["sensor_queries"] = static_cast<double>(sensor_.queries());
+  std::size_t mostCells = 0, leastCells = static_cast<std::size_t>(-1), trees = 0;
+  for (const RobotState& R : robots_) {
+    mostCells = std::max(mostCells, R.cellsEntered);
+    leastCells = std::min(leastCells, R.cellsEntered);
+  }
+  for (int o : owner_) trees += o >= 0 ? 1 : 0;
+  plan.statistics["cells_most"] = static_cast<double>(mostCells);
+  plan.statistics["cells_least"] = static_cast<double>(k ? leastCells : 0);
+  plan.statistics["tree_mega_cells"] = static_cast<double>(trees);
+  for (const auto& [name, n] : fired_) plan.statistics["rule." + name] = static_cast<double>(n);
+  for (std::size_t i = 0; i < k; ++i) plan.statistics["cells_robot_" + std::to_string(i)] = static_cast<double>(robots_[i].cellsEntered);
+  return status;
+}
+
+}  // namespace
+
+std::string MultiStPlanner::description() const {
+  return "Multi-ST (online, several robots): disjoint spanning trees grown at once on the shared mega-cell grid, each robot walking "
+         "round its own; a rule knowledge base (YAML, kb=on|off|FILE) for the robots and moving obstacles met; travel to what the trees "
+         "left";
+}
+
+std::vector<ParamSpec> MultiStPlanner::params() const {
+  return {{"kb", ParamType::kPath, "on", "on|off|FILE",
+           "the knowledge base: on (the shipped rules, planners/data/multi_st_kb.yaml), off (the paper's baseline: wait until the cell "
+           "clears) or a coverkit.kb/1 file"},
+          {"step", ParamType::kDouble, "0.1", "0.001:1000", "seconds per step (one move between neighbouring sub-cells, or a wait)"}};
+}
+
+Capabilities MultiStPlanner::capabilities() const {
+  Capabilities c;
+  c.online = true;
+  c.multiRobot = true;
+  c.coverage = "free_sub_cells";
+  return c;
+}
+
+Plan MultiStPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition& stop) {
+  return planWith(ctx, params, stop, nullptr);
+}
+
+Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition& stop, TeamSensor* given) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Plan plan;
+  const Problem& problem = ctx.problem;
+  const std::size_t k = problem.robots.size();
+  checkTeamGrid(ctx, "multi_st");
+  const std::string kbSpec = params.text("kb");
+  const bool kbOn = kbSpec != "off";
+  const KnowledgeBase kb = kbOn ? loadKnowledgeBase(kbSpec) : KnowledgeBase{};
+  const StepTiming timing = makeStepTiming(ctx, params.number("step"));
+  const CellGrid& cells = ctx.cells;
+  if (cells.subSize() < 2 * problem.robots[0].radius)
+    throw InputError("--cell-size", formatDouble(cells.subSizeD()),
+                     "must be at least 2r = " + formatDouble(Rational(2 * problem.robots[0].radius).get_d()) + " for multi_st (the disc must fit in its sub-cell)");
+  for (std::size_t i = 0; i < k; ++i)
+    if (!problem.robots[i].start) {
+      plan.status = PlanStatus::kNoFreeSpace;
+      plan.message = "no free sub-cell for a default start";
+      plan.paths.assign(k, Path{});
+      return plan;
+    }
+  std::vector<CellIndex> starts(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    if (!cells.locateSub(*problem.robots[i].start, starts[i]) || cells.sub(starts[i].col, starts[i].row) != CellState::kFree) {
+      plan.status = PlanStatus::kInvalidStart;
+      plan.message = "robot " + std::to_string(i) + "'s start is not in a free sub-cell";
+      stayAtStarts(problem, plan);
+      return plan;
+    }
+    for (std::size_t j = 0; j < i; ++j)
+      if (starts[j] == starts[i]) {
+        plan.status = PlanStatus::kInvalidStart;
+        plan.message = "robots " + std::to_string(j) + " and " + std::to_string(i) + " start in the same sub-cell";
+        stayAtStarts(problem, plan);
+        return plan;
+      }
+  }
+  // the first step (from the start onto its sub-cell's centre) must be clear of the moving obstacles
+  for (std::size_t i = 0; i < k; ++i) {
+    const PointD s{toDouble(problem.robots[i].start->x), toDouble(problem.robots[i].start->y)};
+    if (!timing.clear(i, s, timing.centre(starts[i]), 0, timing.step)) {
+      plan.status = PlanStatus::kInvalidStart;
+      plan.message = "robot " + std::to_string(i) + "'s first step, onto its sub-cell's centre, is not clear of the moving obstacles";
+      stayAtStarts(problem, plan);
+      return plan;
+    }
+  }
+  // the step from t to t + 1 (step t of the route: route index t - 1 → t)
+  auto moveClear = [&timing](std::size_t robot, CellIndex from, CellIndex to, long t) {
+    return timing.clear(robot, timing.centre(from), timing.centre(to), static_cast<double>(t) * timing.step, static_cast<double>(t + 1) * timing.step);
+  };
+  // One robot in a static world on a grid whose sub-cell centres are not doubles: the walk is placed
+  // as the other sub-cell planners place theirs (walk_path.h: each run its own safe double, a path
+  // without a timeline, sub-cells no double path can cross left out and the team run again).
+  bool doubles = true;
+  for (int c = 0; c < cells.subCols() && doubles; ++c) doubles = Rational(timing.x[static_cast<std::size_t>(c)]) == cells.subCenter(c, 0).x;
+  for (int r = 0; r < cells.subRows() && doubles; ++r) doubles = Rational(timing.y[static_cast<std::size_t>(r)]) == cells.subCenter(0, r).y;
+  if (k == 1 && problem.movingObstacles.empty() && !doubles && !given) {
+    const bool unsafe = withoutUnplaceableCells(ctx, starts[0], plan, [&](const PlanningContext& c) -> std::vector<CellIndex> {
+      TeamSensor sensor(c.cells, starts, moveClear);
+      Team team(c, timing, kb, kbOn, sensor);
+      plan.statistics.clear();
+      plan.status = team.run(starts, stop, plan);
+      std::vector<CellIndex> walk{starts[0]};
+      for (const CellIndex& v : team.robots()[0].route)
+        if (!(v == walk.back())) walk.push_back(v);
+      PlacedWalk placed = placeWalk(c, walk, *problem.robots[0].start, false);
+      if (!placed.startClear) {
+        plan.status = PlanStatus::kInvalidStart;
+        plan.message = "no double start point near the start is clear, or the disc cannot move straight from the start to its sub-cell's centre";
+        return {};
+      }
+      plan.paths.assign(1, std::move(placed.path));
+      plan.statistics["robots"] = 1;
+      plan.statistics["moves_total"] = static_cast<double>(walk.size() - 1);
+      plan.statistics["moves_unsafe"] = static_cast<double>(placed.unsafeMoves);
+      return placed.unsafeCells;
+    });
+    if (unsafe && plan.status != PlanStatus::kInvalidStart) {
+      plan.status = PlanStatus::kPartialCoverage;
+      plan.message = formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
+    }
+  } else {
+    std::unique_ptr<TeamSensor> own;
+    if (!given) own = std::make_unique<TeamSensor>(cells, starts, moveClear);
+    TeamSensor& sensor = given ? *given : *own;
+    Team team(ctx, timing, kb, kbOn, sensor);
+    plan.status = team.run(starts, stop, plan);
+    std::vector<std::vector<CellIndex>> route(k);
+    for (std::size_t i = 0; i < k; ++i) route[i] = team.robots()[i].route;
+    writeTimedPaths(problem, timing, route, plan);
+  }
+  if (plan.message.empty()) plan.message = "covered";
+  plan.timings.emplace_back("team", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return plan;
+}
+
+}  // namespace coverkit::planners

@@ -1,0 +1,492 @@
+// multi_stc_balanced: k robots share one STC tour, each covering a stretch of it, the stretches
+// balanced to minimise the makespan; timed, collision-free by construction and checked by the team
+// validator (docs/multi-robot.md).
+//
+// The baseline of issue 16 (offline, static worlds), in the spirit of MSTC (N. Hazon and G. Kaminka,
+// "Redundancy, efficiency and robustness in multi-robot coverage", ICRA 2005) and its balanced
+// variants: one STC circumnavigation (a cycle through every sub-cell of the free mega-cells of the
+// starts' component, each once) is cut into k disjoint stretches, one around each robot's start.
+// Robot i covers b_i cells behind its start and f_i ahead, going first the shorter way and back
+// (b + f + min(b, f) steps), so that it needs no travel to reach its stretch. The stretches split
+// each gap between neighbouring robots on the cycle; the largest cost is minimised by a binary
+// search over it (for a bound T, going round the cycle each robot takes as much of the gap ahead as
+// T allows, given what it already takes behind; the cycle closes when robot 0's share behind is a
+// fixed point).
+//
+// With `travel=auto` (the default) a second split is tried, in the spirit of MSTC* (balanced pieces
+// reached by travel): the robots, in their order on the cycle, take consecutive pieces, each as long
+// as a bound on (shortest travel to its first cell + its length) allows; the least bound is found by
+// binary search over offsets and rotations. Each robot is then routed by A* in space and time
+// against the robots routed before it, under the rules below, and covers its piece in tour order,
+// waiting where the next cell is taken. That split is kept when every robot gets a route and it
+// finishes sooner than the stretches; else the stretches stand. Prioritised routing can fail where
+// robots are dense (from about 30 robots on a cluttered 256 × 256 map): then the stretches.
+//
+// Decisions:
+//  * time is steps of `step` seconds (default 0.1 s, the Multi-ST paper's 100 ms): one step moves a
+//    robot to a 4-neighbouring sub-cell of its stretch or keeps it where it is. In the first step
+//    every robot moves from its start to the centre of its start's sub-cell (or stays there).
+//  * collisions: from then on every robot is at a sub-cell centre at every step and (stretches) only
+//    ever enters cells of its own stretch, or (travel) never enters a cell another robot is in at
+//    that step or the next nor leaves one another robot enters at the next, so at each step the
+//    cells two robots leave and enter are four distinct lattice points (or one robot waits); two such unit moves between 4-neighbours stay at least one cell
+//    (D = 2r) apart throughout (the cases are few: the same direction keeps the distance; opposite
+//    or perpendicular directions come nearer than D only when one enters the other's cell). The
+//    validator checks every plan exactly anyway; the first step (off-centre starts) is the one it
+//    can refuse.
+//  * robots side by side at sub-cell centres are exactly D apart: with D = 2r a team needs centres
+//    that are doubles (else STC's rounding towards the mega-cell's centre brings two robots of one
+//    mega-cell an ulp too near, and no rounding is clear of both walls and robots): InputError with
+//    the way out (a dyadic radius, or a cell size a little above 2r).
+//  * moving obstacles (coverkit.scenario/1): only routed moves can wait for them or go round, so
+//    among them the travel split is used whatever `travel` says; every step and wait, each robot's
+//    first step and its parking for good are checked exactly against every obstacle (movesClearOf,
+//    the validator's own test). A tour sub-cell that no way reaches (an obstacle parked on it for
+//    good) is left out: status partial_coverage, statistic subcells_skipped. When no robot order
+//    gives every robot a route, the robots stay at their starts (partial_coverage).
+//  * a team of equal discs: the sub-cells are sized for robots[0]; starts must lie in free
+//    mega-cells of one component (status invalid_start otherwise).
+#include <coverkit/planners/multi_stc.h>
+
+#include "team_steps.h"
+#include "walk_path.h"
+
+#include <coverkit/geometry/error.h>
+#include <coverkit/geometry/validate.h>
+#include <coverkit/graph/grid_search.h>
+#include <coverkit/planners/stc_skeleton.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <queue>
+#include <unordered_map>
+
+namespace coverkit::planners {
+
+namespace {
+
+/// STC's tour, its hooks made reachable.
+class StcTour : public StcPlanner {
+public:
+  using StcSkeleton::buildGraph;
+  using StcSkeleton::tourFrom;
+};
+
+/// The stretches: robot j (in cycle order) takes b[j] cells behind its start and f[j] ahead, with
+/// f[j] + b[j + 1] = gap[j] (cyclically). Returns the makespan in moves (cost of the worst robot).
+long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<long>& f) {
+  const std::size_t k = gap.size();
+  b.assign(k, 0);
+  f.assign(k, 0);
+  if (k == 1) {
+    f[0] = gap[0];
+    return gap[0];
+  }
+  auto maxAhead = [](long behind, long T) -> long {   // the most f with behind + f + min(behind, f) <= T
+    if (T - 2 * behind >= behind) return T - 2 * behind;
+    if (T - behind < 0) return -1;
+    return (T - behind) / 2;
+  };
+  auto feasible = [&](long T, std::vector<long>& bb, std::vector<long>& ff) {
+    bb.assign(k, 0);
+    ff.assign(k, 0);
+    long b0 = 0;
+    for (;;) {
+      bb[0] = b0;
+      for (std::size_t j = 0; j < k; ++j) {
+        const long ahead = maxAhead(bb[j], T);
+        if (ahead < 0) return false;
+        const long next = std::max(0L, gap[j] - ahead);
+        if (j + 1 < k) bb[j + 1] = next;
+        else if (next <= b0) {   // the cycle closes: robot 0 already takes what is left behind it
+          for (std::size_t i = 0; i < k; ++i) ff[i] = gap[i] - (i + 1 < k ? bb[i + 1] : b0);
+          return true;
+        } else {
+          b0 = next;
+        }
+      }
+      if (b0 > gap[k - 1]) return false;
+    }
+  };
+  long lo = 0, hi = 1;
+  for (long g : gap) hi += 2 * g;
+  std::vector<long> bb, ff;
+  while (lo < hi) {
+    const long mid = lo + (hi - lo) / 2;
+    if (feasible(mid, bb, ff)) hi = mid;
+    else lo = mid + 1;
+  }
+  feasible(lo, b, f);
+  long worst = 0;
+  for (std::size_t j = 0; j < k; ++j) worst = std::max(worst, b[j] + f[j] + std::min(b[j], f[j]));
+  return worst;
+}
+
+/// Pieces of the tour reached by travel (in the spirit of MSTC*): the robots, in their order on the
+/// tour, take consecutive pieces, each as long as the bound on (shortest travel + piece length)
+/// allows; the least bound over offsets and rotations is found by binary search (`fits` below). Each robot then gets, in order of decreasing travel, a route
+/// found by A* in space and time over the sub-cells of free mega-cells that keeps every rule the
+/// stretches keep by construction, against the robots routed before it: it never enters a cell
+/// another robot is in at that step or the next, never leaves a cell another robot enters at the
+/// next step, and keeps off robots not routed yet at steps 0 and 1 (they leave their start at the
+/// first move) and off cells where routed robots have parked. Its piece is then covered in tour
+/// order, waiting where a cell is taken. False when some robot finds no route within its bound or
+/// its last cell is entered by another after it parks: the caller keeps the stretches.
+/// Moving obstacles: every step (and wait) of a route, each robot's first step from its start to its
+/// sub-cell's centre and its parking from its last step on are checked exactly against each obstacle
+/// (movesClearOf, as the validator decides); the route then waits or goes round.
+
+bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, long L, const std::vector<CellIndex>& startCell,
+                  const std::vector<std::size_t>& order, const StepTiming& timing, std::vector<std::vector<CellIndex>>& out,
+                  std::size_t& skipped) {
+  const bool moving = !timing.problem->movingObstacles.empty();
+  auto cellOfId = [&](long c) { return CellIndex{static_cast<int>(c % cells.subCols()), static_cast<int>(c / cells.subCols())}; };
+  const std::size_t k = startCell.size();
+  const int cols = cells.subCols(), rows = cells.subRows();
+  auto id = [&](CellIndex c) { return static_cast<long>(c.row) * cols + c.col; };
+  auto usable = [&](int c, int r) { return c >= 0 && r >= 0 && c < cols && r < rows && cells.mega(c / 2, r / 2) == CellState::kFree; };
+  auto usableId = [&](int v) { return usable(v % cols, v / cols); };
+  static constexpr int kDc[4] = {1, -1, 0, 0}, kDr[4] = {0, 0, 1, -1};
+  // breadth-first distances from each start over the sub-cells of free mega-cells
+  std::vector<std::vector<int>> dist(k);
+  for (std::size_t i = 0; i < k; ++i) dist[i] = graph::gridDistances(cols, rows, {id(startCell[i])}, usableId);
+  // pieces: piece p = [pieceFirst[p], pieceFirst[p] + pieceLen[p]) on the cycle, taken by robot
+  // order[(p + rotation) % k]. For an offset, a rotation and a bound T, each piece in turn is as long
+  // as T allows after its robot's travel to its first cell (at least one cell); T is feasible when
+  // the pieces reach round the cycle. The least T over the offsets (every one on short tours, 64
+  // spread ones on long) and the rotations is kept.
+  auto cellAt = [&](long v) { return static_cast<std::size_t>(id(walk[static_cast<std::size_t>(((v % L) + L) % L)])); };
+  auto fits = [&](long o, std::size_t rot, long T, std::vector<long>* lens) {
+    long first = o;
+    for (std::size_t p = 0; p < k; ++p) {
+      const int d = dist[order[(p + rot) % k]][cellAt(first)];
+      if (d < 0 || T - d < 1) return false;
+      // at most what leaves a cell for each robot after it (a robot without a piece would sit in one)
+      const long len = std::min<long>(T - d, o + L - first - static_cast<long>(k - 1 - p));
+      if (len < 1) return false;
+      if (lens) (*lens)[p] = len;
+      first += len;
+    }
+    return first == o + L;
+  };
+  long bestCost = -1, bestO = 0;
+  std::size_t bestRot = 0;
+  const long offsets = L * static_cast<long>(k * k) <= 4'000'000L ? L : std::min<long>(L, 64);
+  for (long oi = 0; oi < offsets; ++oi) {
+    const long o = oi * L / offsets;
+    for (std::size_t rot = 0; rot < k; ++rot) {
+      long lo = L / static_cast<long>(k), hi = bestCost < 0 ? 4 * L + cols + rows : bestCost - 1;
+      if (lo > hi || !fits(o, rot, hi, nullptr)) continue;
+      while (lo < hi) {
+        const long mid = lo + (hi - lo) / 2;
+        if (fits(o, rot, mid, nullptr)) hi = mid;
+        else lo = mid + 1;
+      }
+      bestCost = lo, bestO = o, bestRot = rot;
+    }
+  }
+  if (bestCost < 0) return false;
+  std::vector<long> pieceLenOf(k, 0), pieceFirst(k), pieceOf(k);
+  fits(bestO, bestRot, bestCost, &pieceLenOf);
+  auto pieceLen = [&](std::size_t p) { return pieceLenOf[p]; };
+  for (std::size_t p = 0, first = static_cast<std::size_t>(bestO); p < k; first += static_cast<std::size_t>(pieceLen(p)), ++p) {
+    pieceFirst[p] = static_cast<long>(first);
+    pieceOf[order[(p + bestRot) % k]] = static_cast<long>(p);
+  }
+  // reservations: (step, cell) → taken; per cell the last step a routed robot is in it; parked cells
+  // from their step on; robots not routed yet at steps 0 and 1
+  std::unordered_map<long long, int> taken;
+  std::unordered_map<long, long> lastTaken, parkedFrom;
+  std::vector<char> routed(k, 0);
+  const long long W = static_cast<long long>(cols) * rows;
+  auto key = [&](long t, long cell) { return static_cast<long long>(t) * W + cell; };
+  auto occupied = [&](long t, long cell, std::size_t self) {
+    const auto it = taken.find(key(t, cell));
+    if (it != taken.end() && static_cast<std::size_t>(it->second) != self) return true;
+    const auto pk = parkedFrom.find(cell);
+    if (pk != parkedFrom.end() && t >= pk->second) return true;
+    if (t <= 1)
+      for (std::size_t j = 0; j < k; ++j)
+        if (j != self && !routed[j] && id(startCell[j]) == cell) return true;
+    return false;
+  };
+  // a step t → t + 1 from u to v (v == u: a wait)
+  auto allowed = [&](long t, long u, long v, std::size_t self) {
+    if (occupied(t + 1, v, self) || (v != u && (occupied(t, v, self) || occupied(t + 1, u, self)))) return false;
+    return !moving || timing.clear(self, timing.centre(cellOfId(u)), timing.centre(cellOfId(v)), static_cast<double>(t) * timing.step,
+                                   static_cast<double>(t + 1) * timing.step);
+  };
+  std::vector<std::size_t> byTravel(k);
+  std::iota(byTravel.begin(), byTravel.end(), 0);
+  auto travel = [&](std::size_t i) {
+    return dist[i][static_cast<std::size_t>(id(walk[static_cast<std::size_t>(pieceFirst[static_cast<std::size_t>(pieceOf[i])] % L)]))];
+  };
+  // A* over (cell, step) from the route's last entry to `target` (waits allowed, h = the static
+  // distance), within the step `horizon` and `budget` states; appends the way to `route` (true) or
+  // leaves it as it was (false).
+  std::vector<int> toGoal;
+  long toGoalOf = -1;
+  struct Node {
+    long f, t, cell;
+    long long parent;   // key of the parent state, -1 at the root
+  };
+  auto routeTo = [&](std::size_t self, std::vector<long>& route, long target, long horizon, std::size_t budget) {
+    if (toGoalOf != target) {   // breadth-first distances to the target over the usable sub-cells
+      toGoal = graph::gridDistances(cols, rows, {target}, usableId);
+      toGoalOf = target;
+    }
+    const long from = route.back(), t0 = static_cast<long>(route.size());
+    if (toGoal[static_cast<std::size_t>(from)] < 0) return false;
+    auto cmp = [](const Node& a, const Node& b) { return a.f > b.f || (a.f == b.f && (a.t < b.t || (a.t == b.t && a.cell > b.cell))); };
+    std::priority_queue<Node, std::vector<Node>, decltype(cmp)> open(cmp);
+    std::unordered_map<long long, long long> parentOf;   // state → parent state
+    open.push({t0 + toGoal[static_cast<std::size_t>(from)], t0, from, -1});
+    long long reached = -1;
+    std::size_t expanded = 0;
+    while (!open.empty() && reached < 0) {
+      if (++expanded > budget) return false;
+      const Node n = open.top();
+      open.pop();
+      const long long me = key(n.t, n.cell);
+      if (parentOf.count(me)) continue;
+      parentOf[me] = n.parent;
+      if (n.cell == target && n.t > t0 - (from == target ? 1 : 0)) {
+        reached = me;
+        break;
+      }
+      if (n.t >= horizon) continue;
+      const int c = static_cast<int>(n.cell % cols), r = static_cast<int>(n.cell / cols);
+      for (int d = 0; d <= 4; ++d) {
+        const int nc = d < 4 ? c + kDc[d] : c, nr = d < 4 ? r + kDr[d] : r;
+        if (!usable(nc, nr)) continue;
+        const long v = static_cast<long>(nr) * cols + nc;
+        if (toGoal[static_cast<std::size_t>(v)] < 0 || !allowed(n.t, n.cell, v, self) || parentOf.count(key(n.t + 1, v))) continue;
+        open.push({n.t + 1 + toGoal[static_cast<std::size_t>(v)], n.t + 1, v, me});
+      }
+    }
+    if (reached < 0) return false;
+    std::vector<long> way;   // the states after the root
+    for (long long st = reached; parentOf[st] >= 0; st = parentOf[st]) way.push_back(static_cast<long>(st % W));
+    route.insert(route.end(), way.rbegin(), way.rend());
+    return true;
+  };
+  // routed in order of decreasing travel; where that fails, of increasing travel, then in tour order
+  auto routeAll = [&](const std::vector<std::size_t>& sequence) -> bool {
+    taken.clear();
+    lastTaken.clear();
+    parkedFrom.clear();
+    skipped = 0;
+    std::fill(routed.begin(), routed.end(), 0);
+    out.assign(k, {});
+    for (std::size_t i : sequence) {
+      const std::size_t p = static_cast<std::size_t>(pieceOf[i]);
+      const long goal = id(walk[static_cast<std::size_t>(pieceFirst[p] % L)]);
+      const long s0 = id(startCell[i]);
+      if (occupied(1, s0, i)) return false;
+      if (moving) {   // the first step, from the start onto its sub-cell's centre
+        const Point& st = *timing.problem->robots[i].start;
+        if (!timing.clear(i, {toDouble(st.x), toDouble(st.y)}, timing.centre(startCell[i]), 0, timing.step)) return false;
+      }
+      std::vector<long> cellsAt{s0};   // the route, from step 1
+      auto search = [&](long target, long horizon, std::size_t budget) { return routeTo(i, cellsAt, target, horizon, budget); };
+      if (!search(goal, 8 + 3 * static_cast<long>(travel(i)) + 4 * static_cast<long>(k), 4'000'000)) return false;
+      // the piece, in tour order: a move where it is free, else a few waits, else a way round; among
+      // moving obstacles a cell no way reaches is left out
+      for (long m = 1; m < pieceLen(p); ++m) {
+        const long v = id(walk[static_cast<std::size_t>((pieceFirst[p] + m) % L)]);
+        const long t = static_cast<long>(cellsAt.size());
+        if (allowed(t, cellsAt.back(), v, i)) {
+          cellsAt.push_back(v);
+          continue;
+        }
+        if (search(v, t + 64 + 4 * static_cast<long>(k), 200'000)) continue;
+        if (!moving) return false;
+        ++skipped;
+      }
+      // parked from its last step on: clear of the obstacles for good, and nobody routed before enters
+      // that cell later; else the nearest cell (breadth-first) where that holds
+      auto parkable = [&](long cell, long from) {
+        if (moving && !timing.clear(i, timing.centre(cellOfId(cell)), timing.centre(cellOfId(cell)), static_cast<double>(from) * timing.step, HUGE_VAL))
+          return false;
+        if (parkedFrom.count(cell)) return false;
+        const auto lt = lastTaken.find(cell);   // robot i is not in it yet: every entry is another's
+        return lt == lastTaken.end() || lt->second < from;
+      };
+      if (!parkable(cellsAt.back(), static_cast<long>(cellsAt.size()))) {
+        std::vector<long> near{cellsAt.back()};
+        std::unordered_map<long, int> seen{{cellsAt.back(), 0}};
+        bool parked = false;
+        for (std::size_t h = 0; h < near.size() && h < 200 && !parked; ++h) {
+          const int c = static_cast<int>(near[h] % cols), r = static_cast<int>(near[h] / cols);
+          for (int d = 0; d < 4 && !parked; ++d) {
+            if (!usable(c + kDc[d], r + kDr[d])) continue;
+            const long v = static_cast<long>(r + kDr[d]) * cols + c + kDc[d];
+            if (seen.count(v)) continue;
+            seen[v] = 1;
+            near.push_back(v);
+            const std::vector<long> before = cellsAt;
+            if (search(v, static_cast<long>(cellsAt.size()) + 64 + 4 * static_cast<long>(k), 200'000) &&
+                parkable(cellsAt.back(), static_cast<long>(cellsAt.size())))
+              parked = true;
+            else
+              cellsAt = before;
+          }
+        }
+        if (!parked) return false;
+      }
+      const long t = static_cast<long>(cellsAt.size());   // the step of the last entry
+      const long last = cellsAt.back();
+      for (std::size_t m = 0; m < cellsAt.size(); ++m) {
+        taken[key(static_cast<long>(m) + 1, cellsAt[m])] = static_cast<int>(i);
+        long& lt = lastTaken[cellsAt[m]];
+        lt = std::max(lt, static_cast<long>(m) + 1);
+      }
+      parkedFrom[last] = t;
+      routed[i] = 1;
+      for (long c : cellsAt) out[i].push_back(cellOfId(c));
+    }
+    return true;
+  };
+  std::stable_sort(byTravel.begin(), byTravel.end(), [&](std::size_t x, std::size_t y) { return travel(x) > travel(y); });
+  if (routeAll(byTravel)) return true;
+  std::reverse(byTravel.begin(), byTravel.end());
+  if (routeAll(byTravel)) return true;
+  return routeAll(order);
+}
+
+}  // namespace
+
+std::string MultiStcBalancedPlanner::description() const {
+  return "balanced multi-robot STC (baseline, offline): one STC tour cut into balanced pieces the robots reach by conflict-free "
+         "travel, or into a stretch around each robot's start where that is not sooner; timed in steps, clear of each other and of "
+         "moving obstacles (--scenario)";
+}
+
+std::vector<ParamSpec> MultiStcBalancedPlanner::params() const {
+  return {{"tree", ParamType::kChoice, "dfs_ccw", "dfs_ccw|bfs|kruskal_straight", "the shared tour's spanning tree (as stc's)"},
+          {"step", ParamType::kDouble, "0.1", "0.001:1000", "seconds per step (one move between neighbouring sub-cells, or a wait)"},
+          {"travel", ParamType::kChoice, "auto", "auto|off",
+           "auto: equal pieces of the tour reached by conflict-free travel where that finishes sooner than the stretches; off: the stretches only"}};
+}
+
+Capabilities MultiStcBalancedPlanner::capabilities() const {
+  Capabilities c;
+  c.multiRobot = true;
+  c.coverage = "free_mega_cells";
+  return c;
+}
+
+Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition&) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Plan plan;
+  const Problem& problem = ctx.problem;
+  const std::size_t k = problem.robots.size();
+  checkTeamGrid(ctx, "multi_stc_balanced");
+  const CellGrid& cells = ctx.cells;
+  auto fail = [&](PlanStatus s, const std::string& why) {
+    plan.status = s;
+    plan.message = why;
+    plan.paths.assign(k, Path{});
+    for (std::size_t i = 0; i < k; ++i) plan.paths[i].start = {toDouble(problem.robots[i].start->x), toDouble(problem.robots[i].start->y)};
+    return plan;
+  };
+  // the robots' start sub-cells, in free mega-cells
+  std::vector<CellIndex> startCell(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    if (!cells.locateSub(*problem.robots[i].start, startCell[i]) || cells.mega(startCell[i].col / 2, startCell[i].row / 2) != CellState::kFree)
+      return fail(PlanStatus::kInvalidStart, "robot " + std::to_string(i) + "'s start is not in a free mega-cell");
+  }
+  // the shared tour from robot 0's start
+  StcTour stc;
+  const ParamSet stcParams(stc.params(), {{"tree", params.text("tree")}}, "stc");
+  const graph::GridGraph g = stc.buildGraph(ctx);
+  std::vector<CellIndex> walk = stc.tourFrom(ctx, g, startCell[0], stcParams);
+  if (walk.size() < 2) walk = {startCell[0], startCell[0]};
+  const long L = static_cast<long>(walk.size()) - 1;   // closed: the last is the first
+  std::vector<long> indexOf(static_cast<std::size_t>(cells.subCols()) * static_cast<std::size_t>(cells.subRows()), -1);
+  for (long j = 0; j < L; ++j) indexOf[static_cast<std::size_t>(walk[static_cast<std::size_t>(j)].row) * static_cast<std::size_t>(cells.subCols()) +
+                                       static_cast<std::size_t>(walk[static_cast<std::size_t>(j)].col)] = j;
+  std::vector<long> at(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    at[i] = indexOf[static_cast<std::size_t>(startCell[i].row) * static_cast<std::size_t>(cells.subCols()) + static_cast<std::size_t>(startCell[i].col)];
+    if (at[i] < 0) return fail(PlanStatus::kInvalidStart, "robot " + std::to_string(i) + "'s start is not in robot 0's component of free mega-cells");
+  }
+  // robots in cycle order, the gaps between them
+  std::vector<std::size_t> order(k);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return at[a] < at[b]; });
+  for (std::size_t j = 1; j < k; ++j)
+    if (at[order[j]] == at[order[j - 1]])
+      return fail(PlanStatus::kInvalidStart, "robots " + std::to_string(order[j - 1]) + " and " + std::to_string(order[j]) + " start in the same sub-cell");
+  std::vector<long> gap(k);
+  for (std::size_t j = 0; j < k; ++j) {
+    const long next = at[order[(j + 1) % k]];
+    gap[j] = k == 1 ? L - 1 : ((next - at[order[j]] - 1) % L + L) % L;
+  }
+  std::vector<long> behind, ahead;
+  balance(gap, behind, ahead);
+  const StepTiming timing = makeStepTiming(ctx, params.number("step"));
+  // the stretches as cell routes: route[i][m] is robot i's sub-cell at step m + 1 (step 0: its start)
+  std::vector<std::vector<CellIndex>> route(k);
+  for (std::size_t j = 0; j < k; ++j) {
+    const std::size_t i = order[j];
+    const long b = behind[j], f = ahead[j], s = at[i];
+    // the stretch's cycle indices in the order the robot visits them: the shorter side first, out and back
+    std::vector<long> idx{s};
+    auto go = [&](long from, long count, int dir) {
+      for (long m = 1; m <= count; ++m) idx.push_back(from + dir * m);
+    };
+    if (b <= f) {
+      go(s, b, -1);
+      go(s - b, b, 1);
+      go(s, f, 1);
+    } else {
+      go(s, f, 1);
+      go(s + f, f, -1);
+      go(s, b, -1);
+    }
+    for (long v : idx) route[i].push_back(walk[static_cast<std::size_t>(((v % L) + L) % L)]);
+  }
+  std::string split = "stretches";
+  std::size_t skipped = 0;   // among moving obstacles: tour sub-cells no way could reach
+  const bool moving = !problem.movingObstacles.empty();
+  if (moving) {   // only routed moves can wait for and go round the obstacles: travel, whatever `travel` says
+    std::vector<std::vector<CellIndex>> travelled;
+    if (!travelRoutes(cells, walk, L, startCell, order, timing, travelled, skipped)) {
+      plan.status = PlanStatus::kPartialCoverage;
+      plan.message = "no timing found that keeps every robot clear of the moving obstacles and of each other (the robots stay at their starts)";
+      stayAtStarts(problem, plan);
+      return plan;
+    }
+    route.swap(travelled);
+    split = "travel";
+  }
+  // pieces reached by travel, when that finishes sooner and can be timed without conflicts
+  if (!moving && k > 1 && params.text("travel") == "auto") {
+    std::vector<std::vector<CellIndex>> travelled;
+    std::size_t none = 0;
+    if (travelRoutes(cells, walk, L, startCell, order, timing, travelled, none)) {
+      std::size_t a1 = 0, b1 = 0;
+      for (const auto& r : travelled) a1 = std::max(a1, r.size());
+      for (const auto& r : route) b1 = std::max(b1, r.size());
+      if (a1 < b1) {
+        route.swap(travelled);
+        split = "travel";
+      }
+    }
+  }
+  plan.timings.emplace_back("split", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  writeTimedPaths(problem, timing, route, plan);
+  plan.statistics["tour_subcells"] = static_cast<double>(L);
+  plan.statistics["travelled"] = split == "travel" ? 1 : 0;
+  plan.statistics["subcells_skipped"] = static_cast<double>(skipped);
+  plan.status = skipped ? PlanStatus::kPartialCoverage : PlanStatus::kExactSolution;
+  plan.message = skipped ? "left out " + std::to_string(skipped) + " sub-cells of the tour that no way could reach past the moving obstacles"
+                         : "covered every sub-cell of the starts' component of free mega-cells with " + std::to_string(k) + (k == 1 ? " robot" : " robots");
+  plan.timings.emplace_back("paths", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return plan;
+}
+
+}  // namespace coverkit::planners

@@ -1,0 +1,102 @@
+// See team_steps.h.
+#include "team_steps.h"
+
+#include <coverkit/geometry/error.h>
+#include <coverkit/geometry/validate.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace coverkit::planners {
+
+bool StepTiming::clear(std::size_t robot, PointD a, PointD b, double t0, double t1) const {
+  for (std::size_t m = 0; m < problem->movingObstacles.size(); ++m)
+    if (!clearOf(robot, m, a, b, t0, t1)) return false;
+  return true;
+}
+
+bool StepTiming::clearOf(std::size_t robot, std::size_t obstacle, PointD a, PointD b, double t0, double t1) const {
+  const MovingObstacle& m = problem->movingObstacles[obstacle];
+  return movesClearOf(a, b, t0, t1, m, problem->robots[robot].radius + m.radius);
+}
+
+StepTiming makeStepTiming(const PlanningContext& ctx, double step) {
+  const CellGrid& cells = ctx.cells;
+  StepTiming timing{&ctx.problem, std::vector<double>(static_cast<std::size_t>(cells.subCols())),
+                    std::vector<double>(static_cast<std::size_t>(cells.subRows())), step};
+  for (int c = 0; c < cells.subCols(); ++c) timing.x[static_cast<std::size_t>(c)] = stcWaypoint(cells, c, 0).x;
+  for (int r = 0; r < cells.subRows(); ++r) timing.y[static_cast<std::size_t>(r)] = stcWaypoint(cells, 0, r).y;
+  return timing;
+}
+
+void checkTeamGrid(const PlanningContext& ctx, const std::string& planner) {
+  const Problem& problem = ctx.problem;
+  const std::size_t k = problem.robots.size();
+  for (std::size_t i = 1; i < k; ++i)
+    if (problem.robots[i].radius != problem.robots[0].radius)
+      throw InputError("--radius", "robot " + std::to_string(i), planner + " plans for a team of equal discs");
+  if (k < 2) return;
+  // Two robots side by side are exactly D apart at sub-cell centres. Where a centre is not a
+  // double, STC's rounding (towards the mega-cell's centre, which keeps the disc off the walls)
+  // brings the two robots of one mega-cell an ulp nearer than D; with D = 2r no double placement
+  // is both clear of walls and 2r from the other robot. So a team needs centres that are doubles,
+  // or a sub-cell a little larger than 2r.
+  const CellGrid& cells = ctx.cells;
+  bool doubles = true;
+  for (int c = 0; c < cells.subCols() && doubles; ++c) doubles = Rational(toDouble(cells.subCenter(c, 0).x)) == cells.subCenter(c, 0).x;
+  for (int r = 0; r < cells.subRows() && doubles; ++r) doubles = Rational(toDouble(cells.subCenter(0, r).y)) == cells.subCenter(0, r).y;
+  const Box box = problem.workspace.bbox();
+  const double far = std::max({std::abs(box.xmin.get_d()), std::abs(box.xmax.get_d()), std::abs(box.ymin.get_d()), std::abs(box.ymax.get_d()), 1.0});
+  const double slack = Rational(cells.subSize() - 2 * problem.robots[0].radius).get_d();
+  if (!doubles && !(slack > 8 * (std::nextafter(far, HUGE_VAL) - far)))
+    throw InputError(problem.cellSize ? "--cell-size" : "--radius", problem.cellSize ? problem.cellSize->get_str() : problem.robots[0].radius.get_str(),
+                     "a team on this grid: its sub-cell centres are not doubles, so two robots side by side would be an ulp nearer "
+                     "than 2r; use a radius whose sub-cell centres are doubles (a dyadic one such as 1/4 on a dyadic grid) or a "
+                     "--cell-size a little larger than 2r");
+}
+
+void writeTimedPaths(const Problem& problem, const StepTiming& timing, const std::vector<std::vector<CellIndex>>& route, Plan& plan) {
+  const std::size_t k = route.size();
+  const double step = timing.step;
+  plan.paths.assign(k, Path{});
+  std::size_t totalMoves = 0, most = 0, least = static_cast<std::size_t>(-1), longest = 0;
+  for (std::size_t i = 0; i < k; ++i) {
+    Path& p = plan.paths[i];
+    p.start = {toDouble(problem.robots[i].start->x), toDouble(problem.robots[i].start->y)};
+    std::vector<PointD> pts{p.start};
+    p.timeline.push_back({0, p.start});
+    std::size_t moves = 0;
+    for (std::size_t m = 0; m < route[i].size(); ++m) {
+      const PointD q = timing.centre(route[i][m]);
+      p.timeline.push_back({static_cast<double>(m + 1) * step, q});
+      if (m > 0 && !(route[i][m] == route[i][m - 1])) ++moves;
+      if (q.x != pts.back().x || q.y != pts.back().y) pts.push_back(q);
+    }
+    // trailing waits say nothing: the robot stays at its last entry anyway
+    while (p.timeline.size() > 1 && p.timeline.back().p.x == p.timeline[p.timeline.size() - 2].p.x &&
+           p.timeline.back().p.y == p.timeline[p.timeline.size() - 2].p.y)
+      p.timeline.pop_back();
+    p.segments = Path::fromPoints(pts).segments;
+    totalMoves += moves;
+    most = std::max(most, moves);
+    least = std::min(least, moves);
+    longest = std::max(longest, p.timeline.size() - 1);
+  }
+  plan.statistics["robots"] = static_cast<double>(k);
+  plan.statistics["makespan_steps"] = static_cast<double>(longest);   // the first step: onto the start's centre
+  plan.statistics["makespan_s"] = static_cast<double>(longest) * step;
+  plan.statistics["moves_total"] = static_cast<double>(totalMoves);
+  plan.statistics["moves_most"] = static_cast<double>(most);
+  plan.statistics["moves_least"] = static_cast<double>(k ? least : 0);
+}
+
+void stayAtStarts(const Problem& problem, Plan& plan) {
+  const std::size_t k = problem.robots.size();
+  plan.paths.assign(k, Path{});
+  for (std::size_t i = 0; i < k; ++i) {
+    plan.paths[i].start = {toDouble(problem.robots[i].start->x), toDouble(problem.robots[i].start->y)};
+    plan.paths[i].timeline = {{0, plan.paths[i].start}};
+  }
+}
+
+}  // namespace coverkit::planners

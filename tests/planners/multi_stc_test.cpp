@@ -1,0 +1,190 @@
+// multi_stc_balanced and the team's problem checks (docs/multi-robot.md): every team plan valid under
+// the team validator, the team entering every sub-cell of the starts' free mega-cells, the makespan
+// within what the split promises, deterministic; bad teams rejected with the place named.
+#include <coverkit/datasets/generators.h>
+#include <coverkit/datasets/readers.h>
+#include <coverkit/planners/registry.h>
+
+#include "helpers/checkers.h"
+#include "helpers/worlds.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace coverkit;
+using namespace coverkit::testing_helpers;
+
+namespace {
+
+planners::PlanningContext team(const Workspace& w, const Rational& r, std::size_t k, const std::vector<Point>& starts = {},
+                               std::optional<Rational> cellSize = std::nullopt) {
+  Problem p;
+  p.workspace = w;
+  p.cellSize = cellSize;
+  for (std::size_t i = 0; i < k; ++i) p.robots.push_back({r, i < starts.size() ? std::optional<Point>(starts[i]) : std::nullopt});
+  return planners::makeContext(std::move(p));
+}
+
+}  // namespace
+
+TEST(MultiStc, TeamPlansAreValidCompleteAndBalanced) {
+  // the contract's polygon worlds, an open room and seeded grid maps of 1 m pixels (r = 1/2: a pixel
+  // is a sub-cell, whose centres are doubles; the contract's 0.1 m grids with r = 1/10 have centres
+  // that are not, which the planner refuses for a team, below)
+  std::vector<std::pair<std::string, Workspace>> worlds;
+  for (auto& [label, w] : contractWorlds())
+    if (label.rfind("grid", 0) != 0) worlds.push_back({label, w});
+  worlds.push_back({"open", boxWith({})});
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    datasets::GridMapSpec spec;
+    spec.width = spec.height = 24;
+    spec.density = 0.04 * static_cast<double>(seed);
+    spec.clustered = seed != 2;
+    spec.seed = seed;
+    worlds.push_back({"pixels" + std::to_string(seed), datasets::gridToWorkspace(datasets::generateGridMap(spec), "pixels")});
+  }
+  int plans = 0;
+  for (const auto& [label, w] : worlds) {
+    const Rational r = label.rfind("pixels", 0) == 0 ? Rational(1, 2) : contractRadius(label);
+    const std::optional<Rational> D;
+    // the single robot's tour: what the team must enter between them
+    const planners::PlanningContext one = team(w, r, 1, {}, D);
+    const Plan stc = planners::runPlanner("stc", one, {}, 0);
+    const std::vector<char> want = enteredSubcells(one.cells, stc);
+    for (std::size_t k : {1u, 2u, 3u, 5u, 8u}) {
+      SCOPED_TRACE(label + " k = " + std::to_string(k));
+      const planners::PlanningContext ctx = team(w, r, k, {}, D);
+      const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+      ASSERT_EQ(plan.paths.size(), k);
+      EXPECT_TRUE(planIsValid(ctx, plan)) << label << " k = " << k;
+      const std::vector<char> got = enteredSubcells(ctx.cells, plan);
+      std::size_t missing = 0;
+      for (std::size_t c = 0; c < want.size(); ++c) missing += want[c] && !got[c];
+      EXPECT_EQ(missing, 0u) << label << " k = " << k;
+      // the split: one robot takes the whole tour (one step onto its centre, then a move per cell);
+      // a team takes less, whatever the starts (no robot needs more than its stretch's cells and back)
+      const double tour = plan.statistics.at("tour_subcells"), makespan = plan.statistics.at("makespan_steps");
+      if (k == 1) EXPECT_EQ(makespan, tour) << label;
+      else EXPECT_LT(makespan, tour) << label << " k = " << k;
+      EXPECT_EQ(pathJsonOf(plan), pathJsonOf(planners::runPlanner("multi_stc_balanced", ctx, {}, 0))) << label;
+      ++plans;
+    }
+  }
+  EXPECT_GE(plans, 50);
+}
+
+TEST(MultiStc, MoreRobotsFinishSooner) {
+  const Workspace w = boxWith({}, 20, 20);
+  double previous = 1e300;
+  for (std::size_t k : {1u, 2u, 4u, 8u}) {
+    const planners::PlanningContext ctx = team(w, Rational(1, 2), k);
+    const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+    ASSERT_TRUE(planIsValid(ctx, plan));
+    const double makespan = plan.statistics.at("makespan_s");
+    EXPECT_LT(makespan, previous * (k == 1 ? 1.0 : 0.8)) << "k = " << k;
+    previous = makespan;
+  }
+}
+
+TEST(MultiStc, StartsAreSpreadDeterministically) {
+  const Workspace w = boxWith({{{4, 4}, {4, 6}, {6, 6}, {6, 4}}});
+  const planners::PlanningContext a = team(w, Rational(1, 4), 6), b = team(w, Rational(1, 4), 6);
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(*a.problem.robots[i].start, *b.problem.robots[i].start);
+    CellIndex c;
+    ASSERT_TRUE(a.cells.locateSub(*a.problem.robots[i].start, c));
+    EXPECT_EQ(a.cells.mega(c.col / 2, c.row / 2), CellState::kFree);
+    for (std::size_t j = 0; j < i; ++j) {
+      const Point &p = *a.problem.robots[i].start, &q = *a.problem.robots[j].start;
+      EXPECT_GE(Rational((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)), Rational(1, 4));
+    }
+  }
+  // a given start stays; the others keep away from it
+  const planners::PlanningContext c = team(w, Rational(1, 4), 3, {Point{Rational(9), Rational(9)}});
+  EXPECT_EQ(*c.problem.robots[0].start, (Point{Rational(9), Rational(9)}));
+  // more robots than room
+  EXPECT_NE(inputErrorMessage([&] { team(boxWith({}, 2, 2), Rational(1, 2), 5); }).find("--robots"), std::string::npos);
+}
+
+TEST(MultiStc, BadTeamsAreRejected) {
+  const Workspace w = boxWith({});
+  // two starts nearer than 2r
+  EXPECT_NE(inputErrorMessage([&] { team(w, Rational(1, 4), 2, {Point{Rational(1), Rational(1)}, Point{Rational(1), Rational(14, 10)}}); })
+                .find("--start: robots 0 and 1: start closer than the sum of their radii"),
+            std::string::npos);
+  // a moving obstacle that starts on a robot
+  Problem p;
+  p.workspace = w;
+  p.robots.push_back({Rational(1, 4), Point{Rational(1), Rational(1)}});
+  p.movingObstacles.push_back({Rational(1, 2), {{0, {1.5, 1.25}}, {10, {9, 9}}}});
+  EXPECT_NE(inputErrorMessage([&] { planners::makeContext(p); }).find("dynamic_obstacles[0]: starts on robot 0"), std::string::npos);
+  // the same for a default start, one robot or several (an obstacle over the whole room)
+  Problem whole;
+  whole.workspace = w;
+  whole.movingObstacles.push_back({Rational(100), {{5, {5, 5}}}});
+  for (std::size_t k : {1u, 3u}) {
+    whole.robots.assign(k, Robot{Rational(1, 4), std::nullopt});
+    const std::string why = inputErrorMessage([&] { planners::makeContext(whole); });
+    EXPECT_TRUE(why.find("dynamic_obstacles[0]: starts on robot 0") != std::string::npos || why.find("clear of the moving obstacles") != std::string::npos)
+        << "k = " << k << ": " << why;
+  }
+  // a single-robot planner refuses a team
+  const planners::PlanningContext two = team(w, Rational(1, 4), 2);
+  EXPECT_NE(inputErrorMessage([&] { planners::runPlanner("stc", two, {}, 0); }).find("plans for one robot"), std::string::npos);
+  // a start in a partially blocked mega-cell: invalid_start, as stc says
+  const Workspace holed = boxWith({{{Rational(9, 2), Rational(9, 2)}, {Rational(9, 2), Rational(11, 2)}, {Rational(11, 2), Rational(11, 2)}, {Rational(11, 2), Rational(9, 2)}}});
+  const planners::PlanningContext partial = team(holed, Rational(1, 4), 2, {Point{Rational(1), Rational(1)}, Point{Rational(17, 4), Rational(17, 4)}});
+  EXPECT_EQ(planners::runPlanner("multi_stc_balanced", partial, {}, 0).status, PlanStatus::kInvalidStart);
+  // a grid whose sub-cell centres are not doubles with D = 2r: refused with the way out; a
+  // sub-cell a little larger plans
+  const planners::PlanningContext tenth = team(w, Rational(1, 10), 3);
+  EXPECT_NE(inputErrorMessage([&] { planners::runPlanner("multi_stc_balanced", tenth, {}, 0); }).find("--cell-size a little larger than 2r"),
+            std::string::npos);
+  const planners::PlanningContext wider = team(w, Rational(1, 10), 3, {}, Rational(1, 5) + Rational(1, 1000000));
+  EXPECT_TRUE(planIsValid(wider, planners::runPlanner("multi_stc_balanced", wider, {}, 0)));
+}
+
+// With travel (the default), an obstacle-free map is split evenly: the makespan within 1.15 × the
+// ideal (free sub-cells / k) steps for 2 to 16 robots placed farthest apart, every plan valid; with
+// travel=off the stretches alone (each robot covering only next to its start) are slower.
+TEST(MultiStc, TravelBalancesAnOpenMap) {
+  const Workspace w = boxWith({}, 50, 50);
+  for (std::size_t k : {2u, 4u, 8u, 16u}) {
+    const planners::PlanningContext ctx = team(w, Rational(1, 2), k);
+    const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+    ASSERT_TRUE(planIsValid(ctx, plan)) << "k = " << k;
+    EXPECT_EQ(plan.statistics.at("travelled"), 1) << "k = " << k;
+    EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * 2500.0 / static_cast<double>(k)) << "k = " << k;
+    const Plan stay = planners::runPlanner("multi_stc_balanced", ctx, {{"travel", "off"}}, 0);
+    ASSERT_TRUE(planIsValid(ctx, stay)) << "k = " << k;
+    EXPECT_EQ(stay.statistics.at("travelled"), 0);
+    EXPECT_GE(stay.statistics.at("makespan_steps"), plan.statistics.at("makespan_steps"));
+  }
+}
+
+// Among moving obstacles every step and wait is checked against them exactly, as the validator does:
+// the team waits or goes round, and every plan is valid. An obstacle that parks for good on the map
+// keeps a few sub-cells out of reach: the plan says so (partial, subcells_skipped) and stays valid.
+TEST(MultiStc, PlansAmongMovingObstacles) {
+  const Workspace w = boxWith({}, 20, 20);
+  for (std::size_t k : {1u, 2u, 4u}) {
+    Problem p;
+    p.workspace = w;
+    p.robots.assign(k, Robot{Rational(1, 2), std::nullopt});
+    // one crosses the room and parks in a corner, one sweeps along a row and parks elsewhere, each on
+    // a corner of four sub-cells, whose centres are then out of reach for good
+    p.movingObstacles.push_back({Rational(1, 2), {{0, {10, 1}}, {20, {10, 19}}, {40, {1, 1}}}});
+    p.movingObstacles.push_back({Rational(1, 4), {{5, {1, 12}}, {30, {19, 12}}, {40, {15, 14}}}});
+    const planners::PlanningContext ctx = planners::makeContext(p);
+    const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+    ASSERT_TRUE(plan.status == PlanStatus::kExactSolution || plan.status == PlanStatus::kPartialCoverage) << plan.message;
+    const ValidationReport rep = validatePaths(ctx.problem, plan.paths);
+    EXPECT_TRUE(rep.valid) << "k = " << k << ": " << (rep.violations.empty() ? "" : rep.violations[0].detail);
+    EXPECT_EQ(plan.statistics.at("travelled"), 1);
+    // each parked obstacle (at a corner of four sub-cells whose centres are √0.5 < r + ρ away) keeps
+    // those four out of reach, unless a robot covered them before it arrived
+    EXPECT_LE(plan.statistics.at("subcells_skipped"), 8) << "k = " << k;
+    EXPECT_EQ(plan.status == PlanStatus::kPartialCoverage, plan.statistics.at("subcells_skipped") > 0);
+  }
+}
