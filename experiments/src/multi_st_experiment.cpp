@@ -37,6 +37,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <variant>
 
 namespace coverkit::experiments {
 
@@ -159,7 +160,7 @@ std::vector<MovingObstacle> crossingObstacles(int count, double width, double he
   std::vector<MovingObstacle> out;
   for (int i = 0; i < count; ++i) {
     MovingObstacle m;
-    m.radius = Rational(1 + static_cast<long>(draw(rng, 2)), 4);
+    m.radius = Rational(1 + static_cast<long>(draw(rng, 2))) / 4;
     double t = 1 + static_cast<double>(draw(rng, 20)) / 4;
     PointD p{0.5 + static_cast<double>(draw(rng, static_cast<std::uint64_t>(width))), 0.5 + static_cast<double>(draw(rng, static_cast<std::uint64_t>(height)))};
     m.waypoints.push_back({t, p});
@@ -304,6 +305,44 @@ std::vector<std::pair<std::string, std::string>> MultiStExperiment::summarise(co
 // ---------------------------------------------------------------------------------------------
 // team-check
 
+/// The workspace as WKT (MULTIPOLYGON, coordinates as the shortest decimals that read back to the
+/// same doubles; the generators' lattices make those the exact values).
+std::string workspaceWkt(const Workspace& w) {
+  std::ostringstream out;
+  out << "MULTIPOLYGON (";
+  auto ring = [&](const Ring& r) {
+    out << "(";
+    for (std::size_t i = 0; i <= r.size(); ++i) {
+      const Point& p = r[i % r.size()];
+      out << (i ? ", " : "") << formatDouble(toDouble(p.x)) << " " << formatDouble(toDouble(p.y));
+    }
+    out << ")";
+  };
+  for (std::size_t g = 0; g < w.regions.size(); ++g) {
+    out << (g ? ", " : "") << "(";
+    ring(w.regions[g].outer);
+    for (const Ring& h : w.regions[g].holes) {
+      out << ", ";
+      ring(h);
+    }
+    out << ")";
+  }
+  out << ")\n";
+  return out.str();
+}
+
+std::string scenarioYaml(const std::vector<MovingObstacle>& obstacles) {
+  std::ostringstream out;
+  out << "format: coverkit.scenario/1\ndynamic_obstacles:\n";
+  for (const MovingObstacle& m : obstacles) {
+    out << "  - radius: " << m.radius.get_str() << "\n    waypoints: [";
+    for (std::size_t i = 0; i < m.waypoints.size(); ++i)
+      out << (i ? ", " : "") << "[" << formatDouble(m.waypoints[i].t) << ", " << formatDouble(m.waypoints[i].p.x) << ", " << formatDouble(m.waypoints[i].p.y) << "]";
+    out << "]\n";
+  }
+  return out.str();
+}
+
 struct CheckCase {
   std::uint64_t seed;
   bool grid;
@@ -326,7 +365,7 @@ public:
             {"moving_obstacles", T::kInteger}, {"status", T::kText},     {"valid", T::kInteger},        {"static_violations", T::kInteger},
             {"robot_robot", T::kInteger}, {"robot_obstacle", T::kInteger}, {"timeline", T::kInteger},   {"missed_subcells", T::kInteger},
             {"deterministic", T::kInteger}, {"makespan_s", T::kReal},     {"balanced_makespan_s", T::kReal}, {"balanced_valid", T::kInteger},
-            {"plan_seconds", T::kReal}};
+            {"plan_seconds", T::kReal}, {"message", T::kText}};
   }
   std::size_t cases() const override { return static_cast<std::size_t>(scenarios_); }
   std::string caseKey(std::size_t i) const override { return "seed=" + std::to_string(i + 1); }
@@ -363,7 +402,7 @@ public:
       ctx = planners::makeContext(p);
     } catch (const InputError& e) {   // e.g. no room for the team's starts: reported, not counted
       for (const Value& v : std::vector<Value>{std::string("refused: ") + e.what(), std::int64_t{1}, std::int64_t{0}, std::int64_t{0}, std::int64_t{0},
-                                               std::int64_t{0}, std::int64_t{0}, std::int64_t{1}, 0.0, 0.0, std::int64_t{1}, 0.0})
+                                               std::int64_t{0}, std::int64_t{0}, std::int64_t{1}, 0.0, 0.0, std::int64_t{1}, 0.0, std::string()})
         row.push_back(v);
       return {{row}, {}};
     }
@@ -388,9 +427,21 @@ public:
                                              kinds["robot_robot"], kinds["robot_obstacle"], kinds["timeline"],
                                              static_cast<std::int64_t>(missedSubcells(ctx, a.plan)),
                                              static_cast<std::int64_t>(datasets::pathJson(da) == datasets::pathJson(db)), a.metrics.makespan, balanced,
-                                             balancedValid, a.planSeconds})
+                                             balancedValid, a.planSeconds, a.plan.message})
       row.push_back(v);
-    return {{row}, {}};
+    Output out{{row}, {}};
+    const std::size_t missed = static_cast<std::size_t>(std::get<std::int64_t>(row[11]));
+    if (!a.validation.valid || missed > 0) {   // the world, its obstacles and the command, to look again
+      const std::string base = "failures/seed-" + std::to_string(c.seed);
+      std::string starts;
+      for (const Robot& robot : ctx.problem.robots) starts += " --start " + formatDouble(toDouble(robot.start->x)) + "," + formatDouble(toDouble(robot.start->y));
+      out.files = {{base + ".wkt", workspaceWkt(p.workspace)},
+                   {base + ".yaml", scenarioYaml(p.movingObstacles)},
+                   {base + ".sh", "coverkit plan --map seed-" + std::to_string(c.seed) + ".wkt --radius " + c.radius.get_str() + starts +
+                                      " --scenario seed-" + std::to_string(c.seed) + ".yaml --planner multi_st --out seed-" + std::to_string(c.seed) +
+                                      ".json\n"}};
+    }
+    return out;
   }
   std::vector<std::pair<std::string, std::string>> summarise(const Table& t) const override {
     std::size_t n = 0, refused = 0, valid = 0, complete = 0, same = 0, staticV = 0, rr = 0, ro = 0, tl = 0, compared = 0, notAbove = 0, bValid = 0;

@@ -64,6 +64,8 @@
 #include <coverkit/planners/sensor.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <chrono>
 #include <deque>
 #include <map>
@@ -110,8 +112,9 @@ struct RobotState {
   std::vector<CellIndex> route;   ///< the cell at each step from step 1
   std::map<long, long> deferredUntil;
   std::map<long, int> gaveUp;
-  bool nudged = false;
+  int nudgedBy = -1;              ///< a robot this idle one stands in the way of
   long lastChecked = -1;          ///< knowledge version of its last target search (idle robots)
+  long retryAt = -1;              ///< among moving obstacles: when an idle robot looks for a target again
   std::size_t cellsEntered = 0;
 };
 
@@ -158,15 +161,17 @@ private:
   bool occupied(std::size_t self, long v) const;
   bool allowed(std::size_t self, long from, long to) const;
   int blockerOf(std::size_t self, long v) const;
-  std::vector<long> shortestWay(std::size_t self, long from, long goal, long avoid, int limit) const;
+  std::vector<long> shortestWay(std::size_t self, long from, long goal, long avoid, int limit, long t = -1);
   bool act(std::size_t i, KbAction a, long t, int blocker);
-  bool detour(std::size_t i);
+  bool detour(std::size_t i, long t);
   bool skip(std::size_t i, long t);
   bool stepAside(std::size_t i, long avoid, bool comeBack, long t);
   bool stayClear(std::size_t i, long cell, long t, int steps);
   bool safeMove(std::size_t i, long from, long to, long t);
   long flee(std::size_t i, long t);
   void release(std::size_t i);
+  void repair(std::size_t i);
+  void clearTheWay(std::size_t i, std::size_t other);
 
   const PlanningContext& ctx_;
   const CellGrid& cells_;   // sizes and coordinates only: what is free comes from the sensor
@@ -176,6 +181,7 @@ private:
   TeamSensor& sensor_;
   bool moving_;
   int horizon_;
+  double lastObstacle_ = 0;   ///< when the last moving obstacle stops (s)
   int cols_, rows_, mcols_;
   std::vector<signed char> known_;    ///< per sub-cell: -1 not sensed, 0 blocked, 1 free (the team's map)
   std::vector<int> entered_;          ///< per sub-cell: the first robot to enter it, -1 none
@@ -185,7 +191,7 @@ private:
   std::vector<long> next_;            ///< this step's decisions: the cell at t + 1, -1 not decided
   std::map<long, std::size_t> targetOf_;   ///< reserved travel targets
   long version_ = 0;                  ///< bumps when a new target may have appeared
-  std::size_t repeats_ = 0, iterations_ = 0, rulesFired_ = 0;
+  std::size_t repeats_ = 0, iterations_ = 0, rulesFired_ = 0, enteredTotal_ = 0;
   std::map<std::string, std::size_t> fired_;
 };
 
@@ -219,6 +225,7 @@ void Team::enter(std::size_t i, long v, long t) {
     if (e < 0) {
       e = static_cast<int>(i);
       ++R.cellsEntered;
+      ++enteredTotal_;
     } else {
       ++repeats_;
     }
@@ -322,7 +329,7 @@ int Team::blockerOf(std::size_t self, long v) const {
 
 // Breadth-first over sensed free sub-cells, avoiding `avoid` and the cells robots are in; at most
 // `limit` moves (0: no limit). The way after `from`, ending at goal; empty when none.
-std::vector<long> Team::shortestWay(std::size_t self, long from, long goal, long avoid, int limit) const {
+std::vector<long> Team::shortestWay(std::size_t self, long from, long goal, long avoid, int limit, long t) {
   if (from == goal) return {};
   std::map<long, long> parent{{from, -1}};
   std::deque<std::pair<long, int>> open{{from, 0}};
@@ -334,6 +341,10 @@ std::vector<long> Team::shortestWay(std::size_t self, long from, long goal, long
       const long w = step(v, d);
       if (w < 0 || !knownFree(w) || w == avoid || parent.count(w)) continue;
       if (w != goal && blockerOf(self, w) >= 0 && limit > 0) continue;
+      // a way round keeps off cells a moving obstacle holds now (as far as the sensor reaches)
+      if (t >= 0 && moving_ && w != goal && std::abs(colOf(w) - colOf(robots_[self].cell)) + std::abs(rowOf(w) - rowOf(robots_[self].cell)) <= horizon_ &&
+          !sensor_.moveClear(self, cellOf(w), cellOf(w), t))
+        continue;
       parent[w] = v;
       if (w == goal) {
         std::vector<long> way;
@@ -357,7 +368,7 @@ bool Team::findTarget(std::size_t i, long t) {
   while (!open.empty()) {
     const long v = open.front();
     open.pop_front();
-    const bool wanted = (megaFull(megaOf(v)) && owner_[static_cast<std::size_t>(megaOf(v))] < 0) || entered_[static_cast<std::size_t>(v)] < 0;
+    const bool wanted = entered_[static_cast<std::size_t>(v)] < 0;   // (in an unclaimed free mega-cell it grows a new tree there)
     const auto reserved = targetOf_.find(v);
     const auto deferred = R.deferredUntil.find(v);
     const auto given = R.gaveUp.find(v);
@@ -375,6 +386,10 @@ bool Team::findTarget(std::size_t i, long t) {
     for (int d = 0; d < 4; ++d) {
       const long w = step(v, d);
       if (w < 0 || !knownFree(w) || parent[static_cast<std::size_t>(w)] != -2) continue;
+      // the way keeps off cells a moving obstacle holds now, as far as the sensor reaches
+      if (moving_ && std::abs(colOf(w) - colOf(R.cell)) + std::abs(rowOf(w) - rowOf(R.cell)) <= horizon_ &&
+          !sensor_.moveClear(i, cellOf(w), cellOf(w), t))
+        continue;
       parent[static_cast<std::size_t>(w)] = v;
       open.push_back(w);
     }
@@ -386,14 +401,21 @@ void Team::release(std::size_t i) {
   RobotState& R = robots_[i];
   if (R.target >= 0) {
     const auto it = targetOf_.find(R.target);
-    if (it != targetOf_.end() && it->second == i) targetOf_.erase(it);
+    if (it != targetOf_.end() && it->second == i) {
+      targetOf_.erase(it);
+      ++version_;   // free for the others again
+    }
   }
   R.target = -1;
 }
 
-bool Team::detour(std::size_t i) {
+bool Team::detour(std::size_t i, long t) {
   RobotState& R = robots_[i];
   const Waypoint blocked = R.queue.front();
+  if (blocked.tag == Tag::kDetour) {   // a way round that is blocked itself: a new one from here, not one more
+    while (R.queue.size() > 1 && R.queue.front().tag == Tag::kDetour) R.queue.pop_front();
+    R.queue.push_front(blocked);
+  }
   if (R.queue.size() < 2) {
     // on the walk round a tree: leave the blocked quadrant for later and go round it to the next one
     if (blocked.tag != Tag::kTree || R.stack.empty() || R.stack.back().k >= 4 ||
@@ -406,7 +428,7 @@ bool Team::detour(std::size_t i) {
     R.queue.pop_front();
   }
   const long goal = R.queue.front().cell;
-  const std::vector<long> way = shortestWay(i, R.cell, goal, blocked.cell, kDetourMoves);
+  const std::vector<long> way = shortestWay(i, R.cell, goal, blocked.cell, kDetourMoves, t);
   if (way.empty()) {
     // nothing round it within reach: back as it was, except a quadrant left for later (travel covers it)
     R.queue.push_front(blocked);
@@ -434,16 +456,12 @@ bool Team::skip(std::size_t i, long t) {
     case Tag::kSide: {   // the rest of the side trip is left: straight back to the walk
       while (!R.queue.empty() && R.queue.front().tag == Tag::kSide) R.queue.pop_front();
       if (R.queue.empty()) return false;
-      const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, blocked.cell, 0);
-      if (way.empty()) return false;
-      R.queue.pop_front();
-      for (auto it = way.rbegin(); it != way.rend(); ++it) R.queue.push_front({*it, Tag::kDetour});
-      return true;
+      return true;   // the way back to the walk: repair()
     }
     case Tag::kTravel: {
       if (R.target >= 0) {
         R.deferredUntil[R.target] = t + kDeferSteps;
-        ++R.gaveUp[R.target];
+        if (static_cast<double>(t) * timing_.step > lastObstacle_) ++R.gaveUp[R.target];   // given up only once nothing moves any more
       }
       release(i);
       R.queue.clear();
@@ -451,8 +469,80 @@ bool Team::skip(std::size_t i, long t) {
       R.lastChecked = -1;
       return true;
     }
-    default:
-      return detour(i);
+    default: {
+      // a cell of the walk (or of a way round): dropped and left for later (travel comes back for
+      // it); on the walk round a tree the quadrant is passed over and the robot goes on to the next
+      R.queue.pop_front();
+      if (R.queue.empty() && R.mode == Mode::kTree && !R.stack.empty()) {
+        if (R.stack.back().k < 4) ++R.stack.back().k;
+        pushMoveOn(i);
+      }
+      if (R.queue.empty()) return true;
+      const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, blocked.cell, 0, t);
+      if (way.empty()) return true;   // not reachable now: the next refusal skips on
+      const Waypoint goalWp = R.queue.front();
+      R.queue.pop_front();
+      for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goalWp.tag : Tag::kDetour});
+      return true;
+    }
+  }
+}
+
+// The queue's first waypoint must be the robot's cell or next to it (a skip can leave one that is
+// not): the way there is put in front of it, or, where there is none over the sensed cells, it is
+// dropped (on the walk round a tree the walk goes on; travel comes back for what is left).
+void Team::repair(std::size_t i) {
+  RobotState& R = robots_[i];
+  auto adjacent = [&](long v) { return std::abs(colOf(v) - colOf(R.cell)) + std::abs(rowOf(v) - rowOf(R.cell)) <= 1; };
+  for (int guard = 0; guard < 64; ++guard) {
+    if (R.queue.empty() && R.mode == Mode::kTree) nextWaypoints(i);
+    if (R.queue.empty() || adjacent(R.queue.front().cell)) return;
+    const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, -1, 0);
+    if (!way.empty()) {
+      const Waypoint goalWp = R.queue.front();
+      R.queue.pop_front();
+      for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goalWp.tag : Tag::kDetour});
+      return;
+    }
+    R.queue.pop_front();
+    if (R.queue.empty() && R.mode == Mode::kTree && !R.stack.empty()) {
+      if (R.stack.back().k < 4) ++R.stack.back().k;
+      pushMoveOn(i);
+    }
+  }
+  R.queue.clear();   // nothing of it reachable: the tree is left for travel
+  R.stack.clear();
+  if (R.mode == Mode::kTravel) release(i);
+  R.mode = Mode::kIdle;
+  R.lastChecked = -1;
+}
+
+// An idle robot stands in the way of `other`: it goes to the nearest sensed free cell that is not on
+// other's way (its queue) and that no robot holds, by a shortest way that does not pass other.
+void Team::clearTheWay(std::size_t i, std::size_t other) {
+  RobotState& R = robots_[i];
+  const RobotState& O = robots_[other];
+  std::vector<long> onWay{O.cell};
+  for (std::size_t m = 0; m < O.queue.size() && m < 64; ++m) onWay.push_back(O.queue[m].cell);
+  auto inWay = [&](long v) { return std::find(onWay.begin(), onWay.end(), v) != onWay.end(); };
+  std::map<long, long> parent{{R.cell, -1}};
+  std::deque<long> open{R.cell};
+  while (!open.empty()) {
+    const long v = open.front();
+    open.pop_front();
+    if (v != R.cell && !inWay(v) && blockerOf(i, v) < 0) {
+      std::vector<long> way;
+      for (long x = v; x != R.cell; x = parent[x]) way.push_back(x);
+      for (auto it = way.rbegin(); it != way.rend(); ++it) R.queue.push_back({*it, Tag::kAside});
+      return;
+    }
+    if (parent.size() > 4096) return;
+    for (int d = 0; d < 4; ++d) {
+      const long w = step(v, d);
+      if (w < 0 || !knownFree(w) || w == O.cell || parent.count(w)) continue;
+      parent[w] = v;
+      open.push_back(w);
+    }
   }
 }
 
@@ -493,14 +583,17 @@ long Team::flee(std::size_t i, long t) {
   const long from = robots_[i].cell;
   std::map<std::pair<long, int>, long> parent{{{from, 0}, -1}};
   std::deque<std::pair<long, int>> open{{from, 0}};
+  std::pair<long, int> deepest{from, 0};   // where no way stays clear for the whole horizon: the one that stays clear longest
+  auto firstMove = [&](std::pair<long, int> st) {
+    long first = st.first;
+    for (; st.second > 1; st = {parent[st], st.second - 1}) first = parent[st];
+    return st.second == 0 ? from : first;
+  };
   while (!open.empty()) {
     const auto [v, j] = open.front();
     open.pop_front();
-    if (j == horizon_) {
-      long first = v;
-      for (std::pair<long, int> st{v, j}; st.second > 1; st = {parent[st], st.second - 1}) first = parent[st];
-      return first;
-    }
+    if (j > deepest.second) deepest = {v, j};
+    if (j == horizon_) return firstMove({v, j});
     for (int d = -1; d < 4; ++d) {
       const long w = d < 0 ? v : step(v, d);
       if (w < 0 || !knownFree(w) || parent.count({w, j + 1})) continue;
@@ -511,13 +604,13 @@ long Team::flee(std::size_t i, long t) {
       open.push_back({w, j + 1});
     }
   }
-  return from;
+  return firstMove(deepest);
 }
 
 bool Team::act(std::size_t i, KbAction a, long t, int blocker) {
   switch (a) {
     case KbAction::kWait: return false;
-    case KbAction::kDetour: return detour(i);
+    case KbAction::kDetour: return detour(i, t);
     case KbAction::kGiveWay: return stepAside(i, robots_[i].queue.front().cell, true, t);
     case KbAction::kSkip: return skip(i, t);
   }
@@ -550,13 +643,31 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
   }
   double lastObstacle = 0;
   for (const MovingObstacle& m : ctx_.problem.movingObstacles) lastObstacle = std::max(lastObstacle, m.waypoints.back().t);
+  lastObstacle_ = lastObstacle;
   std::size_t freeKnownBound = 0;
   for (int r = 0; r < rows_; ++r)
     for (int c = 0; c < cols_; ++c) freeKnownBound += cells_.insideSub(c, r) ? 1 : 0;
   const long maxSteps = 64L * static_cast<long>(freeKnownBound) + static_cast<long>(lastObstacle / timing_.step) + 10'000;
-  long t = 1, lastMove = 1;
+  long t = 1, lastMove = 1, lastProgress = 1;
+  std::size_t enteredBefore = enteredTotal_;
+  // a team that enters nothing new for this long is going round in circles (it needs at most a
+  // crossing of the map to reach the next target)
+  const long noProgress = 4L * (cols_ + rows_) + kStallSteps;
   PlanStatus status = PlanStatus::kExactSolution;
   std::string why;
+  auto debugDump = [&]() {
+    if (std::getenv("COVERKIT_DEBUG_TEAM"))
+        for (std::size_t i = 0; i < k; ++i) {
+          const RobotState& R = robots_[i];
+          std::fprintf(stderr, "robot %zu at (%d,%d) mode %d queue %zu front (%d,%d) tag %d target %ld blocked %d stack %zu\n", i, colOf(R.cell), rowOf(R.cell),
+                       static_cast<int>(R.mode), R.queue.size(), R.queue.empty() ? -1 : colOf(R.queue.front().cell), R.queue.empty() ? -1 : rowOf(R.queue.front().cell),
+                       R.queue.empty() ? -1 : static_cast<int>(R.queue.front().tag), R.target, R.blocked, R.stack.size());
+          for (std::size_t m = R.route.size() > 24 ? R.route.size() - 24 : 0; m < R.route.size(); ++m) std::fprintf(stderr, " (%d,%d)", R.route[m].col, R.route[m].row);
+          std::fprintf(stderr, "\n queue:");
+          for (std::size_t m = 0; m < std::min<std::size_t>(R.queue.size(), 12); ++m) std::fprintf(stderr, " (%d,%d)%d", colOf(R.queue[m].cell), rowOf(R.queue[m].cell), static_cast<int>(R.queue[m].tag));
+          std::fprintf(stderr, "\n");
+        }
+  };
   for (;; ++t) {
     if ((t & 63) == 0 && stop.expired()) {
       status = PlanStatus::kTimeout;
@@ -574,8 +685,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       RobotState& R = robots_[i];
       // what to do next
       if (R.mode == Mode::kTravel && R.target >= 0) {
-        const long m = megaOf(R.target);
-        const bool stillWanted = (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) || entered_[static_cast<std::size_t>(R.target)] < 0;
+        const bool stillWanted = entered_[static_cast<std::size_t>(R.target)] < 0;
         if (!stillWanted) {
           release(i);
           R.queue.clear();
@@ -594,17 +704,29 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         if (R.mode == Mode::kTravel) release(i);
         R.mode = Mode::kIdle;
         bool due = R.lastChecked != version_;
-        for (const auto& [cell, until] : R.deferredUntil) due = due || until == t;
+        for (auto it = R.deferredUntil.begin(); it != R.deferredUntil.end();)   // a deferral that ends: look again
+          if (it->second <= t) {
+            it = R.deferredUntil.erase(it);
+            due = true;
+          } else {
+            ++it;
+          }
+        // among moving obstacles what they hold now may open later: look again every few steps
+        // while they move (and once after they stop)
+        due = due || (R.retryAt >= 0 && t >= R.retryAt);
         if (due) {
           R.lastChecked = version_;
-          findTarget(i, t);
+          R.retryAt = -1;
+          if (!findTarget(i, t) && moving_ && static_cast<double>(t - 2 * horizon_) * timing_.step <= lastObstacle) R.retryAt = t + horizon_;
         }
       }
-      if (R.mode == Mode::kIdle && R.nudged && R.queue.empty()) stepAside(i, -1, false, t);
-      R.nudged = false;
-      if (!R.queue.empty() || R.mode != Mode::kIdle) anyWork = true;
+      if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy));
+      R.nudgedBy = -1;
+      if (!R.queue.empty() || R.mode != Mode::kIdle || R.retryAt >= 0) anyWork = true;
       // the move
+      repair(i);
       long to = R.cell;
+      bool onPlan = false;   // a move to a waypoint of the plan itself, not of a way round
       for (int attempt = 0; attempt < 2 && !R.queue.empty(); ++attempt) {
         const long want = R.queue.front().cell;
         if (want == R.cell) {   // already there (a detour that ends where it began)
@@ -615,13 +737,14 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         const bool obstaclesOk = robotsOk && safeMove(i, R.cell, want, t);
         if (robotsOk && obstaclesOk) {
           to = want;
+          onPlan = R.queue.front().tag != Tag::kDetour && R.queue.front().tag != Tag::kAside;
           R.queue.pop_front();
           break;
         }
         // an event: the knowledge base decides (kb=off: wait)
         const int blocker = robotsOk ? -1 : blockerOf(i, want);
         if (blocker >= 0 && robots_[static_cast<std::size_t>(blocker)].mode == Mode::kIdle && robots_[static_cast<std::size_t>(blocker)].queue.empty())
-          robots_[static_cast<std::size_t>(blocker)].nudged = true;
+          robots_[static_cast<std::size_t>(blocker)].nudgedBy = static_cast<int>(i);
         if (attempt > 0 || !kbOn_) break;
         KbSituation s;
         s.event = robotsOk ? KbEvent::kObstacleAhead : KbEvent::kRobotAhead;
@@ -637,7 +760,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           R.pendingSince = t;
         }
         if (!act(i, kb_.rules[static_cast<std::size_t>(rule)].action, t, blocker)) break;
-        if (R.queue.empty() && R.mode == Mode::kTree) nextWaypoints(i);
+        repair(i);
       }
       if (to == R.cell && moving_ && !stayClear(i, R.cell, t, horizon_)) {   // reflex: an obstacle is coming
         const long w = flee(i, t);
@@ -647,15 +770,17 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         }
       }
       next_[i] = to;
-      if (to != R.cell) {
+      // progress is a move along the plan: waiting and ways round count as blocked steps, so that a
+      // robot going round and round a cell it never reaches comes to the rules that give it up
+      if (to != R.cell) moved = true;
+      if (onPlan) {
         R.blocked = 0;
-        moved = true;
-        if (R.pendingRule >= 0) {   // the rule fired worked: the robot moves again
+        if (R.pendingRule >= 0) {   // the rule fired worked: the robot is on its way again
           double& w = R.weights[static_cast<std::size_t>(R.pendingRule)];
           w += kb_.learningRate * (1 - w);
           R.pendingRule = -1;
         }
-      } else if (!R.queue.empty()) {
+      } else if (!R.queue.empty() || to != R.cell) {
         ++R.blocked;
         if (R.pendingRule >= 0 && t - R.pendingSince >= kb_.outcomeSteps) {
           double& w = R.weights[static_cast<std::size_t>(R.pendingRule)];
@@ -688,18 +813,30 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     if (moved) lastMove = t;
     if (!anyWork && !moved && static_cast<double>(t) * timing_.step > lastObstacle) {
       // every robot idle with nothing left that it could reach: done
-      bool pending = false;
-      for (const RobotState& R : robots_) pending = pending || !R.deferredUntil.empty();
-      if (!pending) break;
+      // (a target deferred for a while comes back when its deferral ends)
       bool live = false;
       for (const RobotState& R : robots_)
-        for (const auto& [cell, until] : R.deferredUntil) live = live || (until > t && R.gaveUp.at(cell) < kGiveUpAfter && entered_[static_cast<std::size_t>(cell)] < 0);
+        for (const auto& [cell, until] : R.deferredUntil) {
+          const auto g = R.gaveUp.find(cell);
+          live = live || ((g == R.gaveUp.end() || g->second < kGiveUpAfter) && entered_[static_cast<std::size_t>(cell)] < 0);
+        }
       if (!live) break;
+    }
+    if (enteredTotal_ != enteredBefore) {
+      enteredBefore = enteredTotal_;
+      lastProgress = t;
+    }
+    if (t - lastProgress > noProgress && static_cast<double>(t) * timing_.step > lastObstacle) {
+      status = PlanStatus::kPartialCoverage;
+      why = "no robot entered a new sub-cell for " + std::to_string(noProgress) + " steps";
+      debugDump();
+      break;
     }
     if (t - lastMove > kStallSteps && static_cast<double>(t) * timing_.step > lastObstacle) {
       status = PlanStatus::kPartialCoverage;
       why = kbOn_ ? "no robot could move for " + std::to_string(kStallSteps) + " steps"
                   : "deadlock: the robots wait for each other (kb=off waits until a cell clears; kb=on resolves it)";
+      debugDump();
       break;
     }
   }
