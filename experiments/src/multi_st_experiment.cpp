@@ -184,11 +184,18 @@ std::pair<std::string, std::map<std::string, std::string>> plannerSpec(const std
   return {s.substr(0, colon), {{s.substr(colon + 1, eq - colon - 1), s.substr(eq + 1)}}};
 }
 
-std::string cellsPerRobot(const Plan& plan, std::size_t k) {
+/// Distinct sub-cells each robot's timeline enters ("a/b/c"), as the paper's Table 6 counts cells.
+std::string cellsPerRobot(const CellGrid& cells, const Plan& plan) {
   std::string out;
-  for (std::size_t i = 0; i < k; ++i) {
-    const auto it = plan.statistics.find("cells_robot_" + std::to_string(i));
-    out += (i ? "/" : "") + (it == plan.statistics.end() ? std::string("-") : std::to_string(static_cast<long>(it->second)));
+  for (std::size_t i = 0; i < plan.paths.size(); ++i) {
+    std::vector<long> seen;
+    for (const TimedPoint& e : plan.paths[i].timeline) {
+      CellIndex c;
+      if (cells.locateSubD(e.p, c)) seen.push_back(static_cast<long>(c.row) * cells.subCols() + c.col);
+    }
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    out += (i ? "/" : "") + std::to_string(seen.size());
   }
   return out;
 }
@@ -225,7 +232,7 @@ public:
       const Metrics& m = r.metrics;
       out.rows.push_back(Row{c.table, c.setting, static_cast<std::int64_t>(c.robots), spec, std::string(toString(r.plan.status)),
                              static_cast<std::int64_t>(r.validation.valid), m.makespan, m.sumOfTimes / c.robots, static_cast<std::int64_t>(m.steps),
-                             static_cast<std::int64_t>(m.repeatedSteps), m.iterationRate, m.coverageRate, cellsPerRobot(r.plan, ctx.problem.robots.size()),
+                             static_cast<std::int64_t>(m.repeatedSteps), m.iterationRate, m.coverageRate, cellsPerRobot(ctx.cells, r.plan),
                              m.balance, static_cast<std::int64_t>(missedSubcells(ctx, r.plan)), r.planSeconds});
     }
     return out;
@@ -249,9 +256,9 @@ std::vector<std::pair<std::string, std::string>> MultiStExperiment::summarise(co
      << "`missed` counts free sub-cells reachable from the starts (once the moving obstacles have passed) that no robot entered.\n\n";
   md << "## Table 6: starting places on a 24 × 24 grid, 4 robots\n\nPaper (cells per robot): corners 148/150/150/134 (free), "
      << "145/131/142/161 (obstacles); adjacent centre cells 45/85/211/241 (free), 70/72/199/233 (obstacles).\n\n"
-     << "| setting | planner | valid | cells per robot | balance | makespan | repeated steps | missed |\n|---|---|---|---|---|---|---|---|\n";
+     << "| setting | planner | status | valid | cells per robot | balance | makespan | repeated steps | missed |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Row* r : rowsOf("t6"))
-    md << "| " << t.text(*r, "setting") << " | " << t.text(*r, "planner") << " | " << (t.real(*r, "valid") ? "yes" : "no") << " | "
+    md << "| " << t.text(*r, "setting") << " | " << t.text(*r, "planner") << " | " << t.text(*r, "status") << " | " << (t.real(*r, "valid") ? "yes" : "no") << " | "
        << t.text(*r, "cells_per_robot") << " | " << fmt(t.real(*r, "balance"), 2) << " | " << fmt(t.real(*r, "makespan_s"), 1) << " s | "
        << t.text(*r, "repeated_steps") << " | " << t.text(*r, "missed_subcells") << " |\n";
   md << "\n## Table 5, Figs 15-17: time against the number of robots\n\nPaper (units as printed): Fig 15 (50 × 50) 500 / 350 / 275 / 200; "

@@ -459,6 +459,28 @@ expect_bad "scenario: an obstacle on a robot" "onrobot.yaml: dynamic_obstacles[0
   "$CK" evaluate --map "$T/room.wkt" --path "$T/moving.json" --scenario "$T/still.yaml" 2>&1 | grep -q "valid: yes" && ok ||
   bad "team plan among a moving obstacle"
 expect_bad "evaluate: a malformed scenario" "typo.yaml: dynamic_obstacle: unknown key" evaluate --map "$DATA/maze.map" --path "$T/team.json" --scenario "$T/typo.yaml"
+# multi_st: its knowledge base is a file of rules; a bad one is bad input naming the file and the place
+mst() { echo plan --planner multi_st --map "$DATA/maze.map" --radius 0.5 --robots 2 --out "$T/out.json"; }
+printf 'format: coverkit.kb/1\nrules:\n  - {name: a, event: robot_ahead, action: teleport}\n' > "$T/kb-action.yaml"
+printf 'format: coverkit.kb/1\nrules:\n  - {name: a, event: robot_ahead, action: wait, weight: 2}\n' > "$T/kb-weight.yaml"
+printf 'format: coverkit.kb/1\nrule: []\n' > "$T/kb-typo.yaml"
+expect_bad "knowledge base: an unknown action" "kb-action.yaml: rules[0].action: 'teleport' is not one of" $(mst) --param "kb=$T/kb-action.yaml"
+expect_bad "knowledge base: a weight above 1" "kb-weight.yaml: rules[0].weight: expected a number in [0, 1]" $(mst) --param "kb=$T/kb-weight.yaml"
+expect_bad "knowledge base: a misspelt key" "kb-typo.yaml: rule: unknown key" $(mst) --param "kb=$T/kb-typo.yaml"
+expect_bad "knowledge base: missing file" "nothere-kb.yaml: cannot read the knowledge base file" $(mst) --param "kb=$T/nothere-kb.yaml"
+# a team plan of multi_st, valid, with every reachable sub-cell; kb=off and a rule file of one's own run too
+printf 'format: coverkit.kb/1\nrules:\n  - {name: only_wait, event: robot_ahead, action: wait}\n' > "$T/kb-own.yaml"
+"$CK" plan --planner multi_st --map "$DATA/maze.map" --radius 0.5 --robots 4 --out "$T/mst.json" > "$T/mst.out" 2>&1 &&
+  grep -q "valid yes; sub-cell coverage 1;" "$T/mst.out" &&
+  "$CK" plan --planner multi_st --map "$DATA/maze.map" --radius 0.5 --robots 4 --param kb=off --out "$T/mst-off.json" > /dev/null 2>&1 &&
+  "$CK" plan --planner multi_st --map "$DATA/maze.map" --radius 0.5 --robots 4 --param "kb=$T/kb-own.yaml" --out "$T/mst-own.json" > /dev/null 2>&1 &&
+  "$CK" evaluate --map "$DATA/maze.map" --path "$T/mst.json" 2>&1 | grep -q "valid: yes" && ok ||
+  bad "multi_st team plan: $(head -3 "$T/mst.out" 2> /dev/null)"
+# team-check on a few seeded scenarios: no static, robot-robot or timeline violation, the same bytes twice
+"$CK" experiment team-check --seeds 24 --out "$T/tc" --quiet > /dev/null 2>&1 &&
+  [ "$(csv_count "$T/tc/results.csv" "r['static_violations'] == '0' and r['robot_robot'] == '0' and r['timeline'] == '0' and r['deterministic'] == '1'")" -eq 24 ] &&
+  [ "$(csv_count "$T/tc/results.csv" "r['moving_obstacles'] == '0' and (r['valid'] != '1' or r['missed_subcells'] != '0')")" -eq 0 ] && ok ||
+  bad "team-check: $(head -20 "$T/tc/summary.md" 2> /dev/null)"
 
 # --------------------------------------------------------------------------------------------- provenance
 # --version (and run.json) name the revision built (cmake/git_revision.cmake), not the one configured

@@ -186,8 +186,9 @@ TEST(KnowledgeBase, EachEventTriggersItsAction) {
   EXPECT_EQ(fires(KbEvent::kRobotAhead, 2, false), "detour_around_robot");
   EXPECT_EQ(fires(KbEvent::kRobotAhead, 6, true), "skip_robot_cell");
   EXPECT_EQ(fires(KbEvent::kObstacleAhead, 0, false), "wait_for_obstacle");
-  EXPECT_EQ(fires(KbEvent::kObstacleAhead, 3, false), "detour_around_obstacle");
-  EXPECT_EQ(fires(KbEvent::kObstacleAhead, 9, false), "skip_obstacle_cell");
+  EXPECT_EQ(fires(KbEvent::kObstacleAhead, 9, false), "wait_for_obstacle");
+  EXPECT_EQ(fires(KbEvent::kObstacleAhead, 10, false), "detour_around_obstacle");
+  EXPECT_EQ(fires(KbEvent::kObstacleAhead, 25, false), "skip_obstacle_cell");
   // weights decide among matching rules: a give-way that keeps failing loses to the detour
   std::vector<double> learnt = w;
   for (std::size_t i = 0; i < kb.rules.size(); ++i)

@@ -121,7 +121,7 @@ private:
 class TeamSensor {
 public:
   using MoveCheck = std::function<bool(std::size_t robot, CellIndex from, CellIndex to, long step)>;
-  TeamSensor(const CellGrid& cells, std::vector<CellIndex> at, MoveCheck moveClear, int horizon = 12)
+  TeamSensor(const CellGrid& cells, std::vector<CellIndex> at, MoveCheck moveClear, int horizon = 20)
       : cells_(cells), at_(std::move(at)), moveClear_(std::move(moveClear)), horizon_(horizon) {}
   /// The states of mega-cell (mc, mr)'s sub-cells (quadrants 0 bottom-left, 1 bottom-right, 2 top-
   /// right, 3 top-left); outside the grid: all blocked.
