@@ -178,6 +178,8 @@ def main():
         '{"start":[2,2],"segments":[{"type":"line","from":[2,2],"to":[2,3e0]}]}]}\n')
     out("fuzz_scenario", "two-obstacles", "format: coverkit.scenario/1\ndynamic_obstacles:\n  - radius: 0.3\n    waypoints: [[0.0, 1.0, 1.0], [5.0, 4.0, 1.0], [9.0, 4.0, 6.0]]\n  - radius: 1/4\n    waypoints: [[2, 0.5, 0.5]]\n")
     out("fuzz_scenario", "none", "format: coverkit.scenario/1\n")
+    out("fuzz_knowledge_base", "shipped", open(os.path.join(ROOT, "planners", "data", "multi_st_kb.yaml")).read())
+    out("fuzz_knowledge_base", "empty", "format: coverkit.kb/1\nrules: []\n")
     out("fuzz_path_csv", "one-robot", "robot,seq,x,y\n0,0,0.5,0.5\n0,1,1.5,0.5\n0,2,1.5,1.5\n0,3,0.5,1.5\n")
     out("fuzz_path_csv", "two-robots", "robot,seq,x,y\r\n0,0,1,1\r\n1,0,2,2\r\n0,1,1e0,2.5\r\n1,1,-2,2\r\n")
     # experiment configs: the shipped ones
