@@ -929,13 +929,7 @@ Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params
   if (cells.subSize() < 2 * problem.robots[0].radius)
     throw InputError("--cell-size", formatDouble(cells.subSizeD()),
                      "must be at least 2r = " + formatDouble(Rational(2 * problem.robots[0].radius).get_d()) + " for multi_st (the disc must fit in its sub-cell)");
-  for (std::size_t i = 0; i < k; ++i)
-    if (!problem.robots[i].start) {
-      plan.status = PlanStatus::kNoFreeSpace;
-      plan.message = "no free sub-cell for a default start";
-      plan.paths.assign(k, Path{});
-      return plan;
-    }
+  if (!everyRobotHasAStart(problem, plan)) return plan;
   std::vector<CellIndex> starts(k);
   for (std::size_t i = 0; i < k; ++i) {
     if (!cells.locateSub(*problem.robots[i].start, starts[i]) || cells.sub(starts[i].col, starts[i].row) != CellState::kFree) {

@@ -385,6 +385,7 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
   const std::size_t k = problem.robots.size();
   checkTeamGrid(ctx, "multi_stc_balanced");
   const CellGrid& cells = ctx.cells;
+  if (!everyRobotHasAStart(problem, plan)) return plan;
   auto fail = [&](PlanStatus s, const std::string& why) {
     plan.status = s;
     plan.message = why;

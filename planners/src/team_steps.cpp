@@ -90,6 +90,17 @@ void writeTimedPaths(const Problem& problem, const StepTiming& timing, const std
   plan.statistics["moves_least"] = static_cast<double>(k ? least : 0);
 }
 
+bool everyRobotHasAStart(const Problem& problem, Plan& plan) {
+  for (const Robot& r : problem.robots)
+    if (!r.start) {
+      plan.status = PlanStatus::kNoFreeSpace;
+      plan.message = "no free sub-cell for a default start";
+      plan.paths.assign(problem.robots.size(), Path{});
+      return false;
+    }
+  return true;
+}
+
 void stayAtStarts(const Problem& problem, Plan& plan) {
   const std::size_t k = problem.robots.size();
   plan.paths.assign(k, Path{});

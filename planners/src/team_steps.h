@@ -32,6 +32,10 @@ void checkTeamGrid(const PlanningContext& ctx, const std::string& planner);
 /// moves_most and moves_least.
 void writeTimedPaths(const Problem& problem, const StepTiming& timing, const std::vector<std::vector<CellIndex>>& route, Plan& plan);
 
+/// False, with status no_free_space and empty paths, when some robot has no start (makeContext found
+/// no free sub-cell for a default one).
+bool everyRobotHasAStart(const Problem& problem, Plan& plan);
+
 /// Every robot at its start, timed (a plan whose robots could not move).
 void stayAtStarts(const Problem& problem, Plan& plan);
 
