@@ -83,9 +83,9 @@ void addTeam(Problem& problem, const std::vector<std::string>& starts, int robot
   if (!scenario.empty()) problem.movingObstacles = datasets::readScenario(scenario);
 }
 
-planners::PlanningContext makeContext(Problem problem, const std::string& scenario) {
+planners::PlanningContext makeContext(Problem problem, const std::string& scenario, bool teamStarts) {
   try {
-    return planners::makeContext(std::move(problem));
+    return planners::makeContext(std::move(problem), teamStarts);
   } catch (const InputError& e) {
     if (e.file() == "--scenario" && !scenario.empty()) throw InputError(scenario, e.place(), e.problem());
     throw;

@@ -49,7 +49,9 @@ Problem makeProblem(const std::string& map, const std::string& radius, const std
 void addTeam(Problem& problem, const std::vector<std::string>& starts, int robots, const std::string& scenario);
 /// planners::makeContext, its problem checks' errors about the scenario ("--scenario") naming the
 /// scenario file instead (when there is one).
-planners::PlanningContext makeContext(Problem problem, const std::string& scenario);
+/// `teamStarts = false` (evaluate): starts too near each other or to an obstacle are the validator's
+/// to report (robot_robot, robot_obstacle), not bad input.
+planners::PlanningContext makeContext(Problem problem, const std::string& scenario, bool teamStarts = true);
 
 /// A progress bar on stderr, shown only on a terminal and only once a run has taken a second.
 class Progress {

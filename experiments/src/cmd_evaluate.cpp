@@ -85,7 +85,7 @@ int runEvaluateCommand() {
                                               : parsePoint(o.start, "--start");
   if (!o.scenario.empty()) problem.movingObstacles = datasets::readScenario(o.scenario);
   timer.begin("cells");
-  const planners::PlanningContext ctx = makeContext(std::move(problem), o.scenario);
+  const planners::PlanningContext ctx = makeContext(std::move(problem), o.scenario, false);
   ValidationOptions vo;
   vo.threads = threads();
   std::optional<CSpace> evalSpace;

@@ -140,7 +140,7 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
 
 bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, long L, const std::vector<CellIndex>& startCell,
                   const std::vector<std::size_t>& order, const StepTiming& timing, std::vector<std::vector<CellIndex>>& out,
-                  std::size_t& skipped) {
+                  std::size_t& skipped, const TerminationCondition& stop, bool& timedOut) {
   const bool moving = !timing.problem->movingObstacles.empty();
   auto cellOfId = [&](long c) { return CellIndex{static_cast<int>(c % cells.subCols()), static_cast<int>(c / cells.subCols())}; };
   const std::size_t k = startCell.size();
@@ -247,6 +247,10 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
     std::size_t expanded = 0;
     while (!open.empty() && reached < 0) {
       if (++expanded > budget) return false;
+      if ((expanded & 4095) == 0 && stop.expired()) {
+        timedOut = true;
+        return false;
+      }
       const Node n = open.top();
       open.pop();
       const long long me = key(n.t, n.cell);
@@ -378,7 +382,7 @@ Capabilities MultiStcBalancedPlanner::capabilities() const {
   return c;
 }
 
-Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition&) {
+Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition& stop) {
   const auto t0 = std::chrono::steady_clock::now();
   Plan plan;
   const Problem& problem = ctx.problem;
@@ -452,12 +456,14 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
   }
   std::string split = "stretches";
   std::size_t skipped = 0;   // among moving obstacles: tour sub-cells no way could reach
+  bool timedOut = false;     // --time-limit while routing: among moving obstacles the robots stay; else the stretches stand
   const bool moving = !problem.movingObstacles.empty();
   if (moving) {   // only routed moves can wait for and go round the obstacles: travel, whatever `travel` says
     std::vector<std::vector<CellIndex>> travelled;
-    if (!travelRoutes(cells, walk, L, startCell, order, timing, travelled, skipped)) {
-      plan.status = PlanStatus::kPartialCoverage;
-      plan.message = "no timing found that keeps every robot clear of the moving obstacles and of each other (the robots stay at their starts)";
+    if (!travelRoutes(cells, walk, L, startCell, order, timing, travelled, skipped, stop, timedOut)) {
+      plan.status = timedOut ? PlanStatus::kTimeout : PlanStatus::kPartialCoverage;
+      plan.message = timedOut ? "stopped by the time limit while routing the robots (they stay at their starts)"
+                              : "no timing found that keeps every robot clear of the moving obstacles and of each other (the robots stay at their starts)";
       stayAtStarts(problem, plan);
       return plan;
     }
@@ -468,7 +474,7 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
   if (!moving && k > 1 && params.text("travel") == "auto") {
     std::vector<std::vector<CellIndex>> travelled;
     std::size_t none = 0;
-    if (travelRoutes(cells, walk, L, startCell, order, timing, travelled, none)) {
+    if (travelRoutes(cells, walk, L, startCell, order, timing, travelled, none, stop, timedOut)) {
       std::size_t a1 = 0, b1 = 0;
       for (const auto& r : travelled) a1 = std::max(a1, r.size());
       for (const auto& r : route) b1 = std::max(b1, r.size());

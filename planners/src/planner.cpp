@@ -201,7 +201,7 @@ std::string shortText(const Rational& q) {
 }
 }  // namespace
 
-void checkProblem(const Problem& problem) {
+void checkProblem(const Problem& problem, bool teamStarts) {
   const std::string& name = problem.workspace.name;
   if (problem.robots.empty()) throw InputError(name, "robots", "no robot");
   if (problem.workspace.regions.empty()) throw InputError(name, "workspace", "empty free space");
@@ -223,7 +223,9 @@ void checkProblem(const Problem& problem) {
   }
   if (problem.cellSize && *problem.cellSize <= 0) throw InputError("--cell-size", shortText(*problem.cellSize), "must be > 0");
   // a team: no two robots start nearer than the sum of their radii, no moving obstacle starts on a
-  // robot (exactly; touching is allowed, as the validator allows it)
+  // robot (exactly; touching is allowed, as the validator allows it); a plan being evaluated is
+  // judged on them by the validator instead
+  if (!teamStarts) return;
   auto dist2 = [](const Point& a, const Point& b) { return Rational((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); };
   for (std::size_t i = 0; i < problem.robots.size(); ++i) {
     const Robot& a = problem.robots[i];
@@ -274,8 +276,8 @@ void checkCellGridSize(const Problem& problem) {
                        approx(mpz_class(kMaxSubCells)) + " sub-cells: use a larger " + (byCellSize ? "cell size" : "radius or cell size"));
 }
 
-PlanningContext makeContext(Problem problem) {
-  checkProblem(problem);
+PlanningContext makeContext(Problem problem, bool teamStarts) {
+  checkProblem(problem, teamStarts);
   checkCellGridSize(problem);  // before the grid is allocated
   PlanningContext ctx;
   const auto t0 = std::chrono::steady_clock::now();
@@ -285,11 +287,11 @@ PlanningContext makeContext(Problem problem) {
   for (const Robot& r : problem.robots) unplaced += !r.start;
   if (problem.robots.size() > 1 && unplaced > 0) {
     spreadStarts(ctx.cells, problem.robots, problem.movingObstacles);
-    checkProblem(problem);   // the placed starts against the moving obstacles
+    checkProblem(problem, teamStarts);   // the placed starts against the moving obstacles
   } else {
     for (Robot& r : problem.robots)
       if (!r.start) r.start = defaultStart(ctx.cells);
-    if (unplaced > 0 && !problem.movingObstacles.empty()) checkProblem(problem);   // the default start against the obstacles
+    if (unplaced > 0 && !problem.movingObstacles.empty()) checkProblem(problem, teamStarts);   // the default start against the obstacles
   }
   ctx.problem = std::move(problem);
   return ctx;

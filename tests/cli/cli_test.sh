@@ -459,6 +459,10 @@ expect_bad "scenario: an obstacle on a robot" "onrobot.yaml: dynamic_obstacles[0
   "$CK" evaluate --map "$T/room.wkt" --path "$T/moving.json" --scenario "$T/still.yaml" 2>&1 | grep -q "valid: yes" && ok ||
   bad "team plan among a moving obstacle"
 expect_bad "evaluate: a malformed scenario" "typo.yaml: dynamic_obstacle: unknown key" evaluate --map "$DATA/maze.map" --path "$T/team.json" --scenario "$T/typo.yaml"
+# evaluate: robots that start too near each other make an invalid plan, which the validator reports
+printf '{"format":"coverkit.path/1","robots":[{"start":[1.5,1.5],"segments":[],"timeline":[[0,1.5,1.5]]},{"start":[1.7,1.5],"segments":[],"timeline":[[0,1.7,1.5]]}]}\n' > "$T/close.json"
+"$CK" evaluate --map "$DATA/maze.map" --radius 0.25 --path "$T/close.json" > "$T/close.out" 2>&1; rc=$?
+[ $rc -ne 2 ] && grep -q "valid: no" "$T/close.out" && grep -q "robot_robot" "$T/close.out" && ok || bad "evaluate: starts too near: exit $rc, $(head -3 "$T/close.out")"
 # multi_st: its knowledge base is a file of rules; a bad one is bad input naming the file and the place
 mst() { echo plan --planner multi_st --map "$DATA/maze.map" --radius 0.5 --robots 2 --out "$T/out.json"; }
 printf 'format: coverkit.kb/1\nrules:\n  - {name: a, event: robot_ahead, action: teleport}\n' > "$T/kb-action.yaml"

@@ -84,7 +84,9 @@ struct PlanningContext {
 /// Checks robots, radii, starts and cell size against the workspace (InputError on bad input); the
 /// workspace's coordinates must stay within ±10^150 (paths are doubles). makeContext adds
 /// checkCellGridSize; a command without a cell grid (cspace) needs only this.
-void checkProblem(const Problem& problem);
+/// `teamStarts = false` leaves out the checks between robots' starts and moving obstacles' first
+/// places (coverkit evaluate: a plan whose robots start too near is invalid, which the validator says).
+void checkProblem(const Problem& problem, bool teamStarts = true);
 
 /// The most sub-cells a problem may have (the cell grid takes about 2 bytes per sub-cell, the
 /// planners' arrays more); the same limit as classifyCells.
@@ -96,7 +98,7 @@ void checkCellGridSize(const Problem& problem);
 
 /// Builds the context: checks the problem and the size of its cell grid (InputError) before allocating
 /// anything, classifies cells once, and fills in the default start where none was given (see defaultStart).
-PlanningContext makeContext(Problem problem);
+PlanningContext makeContext(Problem problem, bool teamStarts = true);
 
 /// The documented default start: the centre of the first free sub-cell, in row order from the
 /// bottom-left, that lies in a free mega-cell of the largest 4-connected component of free
