@@ -171,6 +171,7 @@ private:
   long flee(std::size_t i, long t);
   void release(std::size_t i);
   void repair(std::size_t i);
+  void startTree(std::size_t i);
   void clearTheWay(std::size_t i, std::size_t other);
 
   const PlanningContext& ctx_;
@@ -488,6 +489,20 @@ bool Team::skip(std::size_t i, long t) {
   }
 }
 
+// A root where the robot stands, if its mega-cell is free and unclaimed; else the robot is idle.
+void Team::startTree(std::size_t i) {
+  RobotState& R = robots_[i];
+  const long m = megaOf(R.cell);
+  if (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) {
+    owner_[static_cast<std::size_t>(m)] = static_cast<int>(i);
+    R.stack.push_back({m, quadrantOf(colOf(R.cell), rowOf(R.cell)), -1, 0});
+    R.mode = Mode::kTree;
+  } else {
+    R.mode = Mode::kIdle;
+    R.lastChecked = -1;
+  }
+}
+
 // The queue's first waypoint must be the robot's cell or next to it (a skip can leave one that is
 // not): the way there is put in front of it, or, where there is none over the sensed cells, it is
 // dropped (on the walk round a tree the walk goes on; travel comes back for what is left).
@@ -631,14 +646,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
   // the roots: robots in index order claim their start mega-cells
   for (std::size_t i = 0; i < k; ++i) {
     RobotState& R = robots_[i];
-    const long m = megaOf(R.cell);
-    if (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) {
-      owner_[static_cast<std::size_t>(m)] = static_cast<int>(i);
-      R.stack.push_back({m, quadrantOf(colOf(R.cell), rowOf(R.cell)), -1, 0});
-      R.mode = Mode::kTree;
-    } else {
-      R.mode = Mode::kIdle;
-    }
+    startTree(i);
     R.route.push_back(cellOf(R.cell));   // step 1: onto the start sub-cell's centre
   }
   double lastObstacle = 0;
@@ -797,15 +805,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         if (R.mode == Mode::kTravel && R.cell == R.target) {   // arrived: a new tree where the mega-cell is free and unclaimed
           release(i);
           R.queue.clear();
-          const long m = megaOf(R.cell);
-          if (megaFull(m) && owner_[static_cast<std::size_t>(m)] < 0) {
-            owner_[static_cast<std::size_t>(m)] = static_cast<int>(i);
-            R.stack.push_back({m, quadrantOf(colOf(R.cell), rowOf(R.cell)), -1, 0});
-            R.mode = Mode::kTree;
-          } else {
-            R.mode = Mode::kIdle;
-            R.lastChecked = -1;
-          }
+          startTree(i);
         }
       }
       R.route.push_back(cellOf(R.cell));

@@ -266,3 +266,15 @@ TEST(MultiSt, PlansAmongMovingObstacles) {
     EXPECT_EQ(pathJsonOf(plan), pathJsonOf(planners::runPlanner("multi_st", ctx, {}, 0)));
   }
 }
+
+// --time-limit: multi_st stops between steps with the paths so far, which are valid as far as they go.
+TEST(MultiSt, StopsAtTheTimeLimit) {
+  const planners::PlanningContext ctx = team(boxWith({}, 64, 64), Rational(1, 2), 3);
+  planners::MultiStPlanner planner;
+  const planners::ParamSet params(planner.params(), {}, "multi_st");
+  const Plan plan = planner.plan(ctx, params, planners::TerminationCondition(1e-9));
+  EXPECT_EQ(plan.status, PlanStatus::kTimeout);
+  ASSERT_EQ(plan.paths.size(), 3u);
+  EXPECT_TRUE(validatePaths(ctx.problem, plan.paths).valid);
+  EXPECT_LT(plan.statistics.at("subcells_entered"), 64 * 64);
+}
