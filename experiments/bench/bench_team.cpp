@@ -1,4 +1,4 @@
-// Teams at scale (issue 16): multi_stc_balanced for 10 … 100 robots on a 256 × 256 grid map, with
+// Teams at scale (issue 16): multi_stc_balanced and multi_st for 10 … 100 robots on a 256 × 256 grid map, with
 // the team validator (robots against robots, exactly) and the team's metrics (`basic`), one thread. The map
 // is a seeded clustered grid map (5 % blocked, pixels of 1 m, r = 1/2: a pixel is a sub-cell) made
 // once; COVERKIT_BENCH_TEAM_MAP=FILE@RADIUS takes another (e.g. a Moving AI map of that size).
@@ -41,7 +41,7 @@ const Workspace& teamMap(Rational& radius) {
   return w;
 }
 
-void BM_TeamPlan(benchmark::State& state) {
+void BM_TeamPlan(benchmark::State& state, const std::string& planner) {
   Rational r;
   const Workspace& w = teamMap(r);
   Problem p;
@@ -54,7 +54,7 @@ void BM_TeamPlan(benchmark::State& state) {
   using Clock = std::chrono::steady_clock;
   for (auto _ : state) {
     const auto t0 = Clock::now();
-    plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+    plan = planners::runPlanner(planner, ctx, {}, 0);
     const auto t1 = Clock::now();
     rep = validatePaths(ctx.problem, plan.paths);
     const auto t2 = Clock::now();
@@ -70,12 +70,16 @@ void BM_TeamPlan(benchmark::State& state) {
   const double steps = plan.statistics.at("makespan_steps");
   state.counters["robots"] = static_cast<double>(state.range(0));
   state.counters["makespan_steps"] = steps;
-  state.counters["tour_subcells"] = plan.statistics.at("tour_subcells");
+  const auto tour = plan.statistics.find("tour_subcells");
+  if (tour != plan.statistics.end()) state.counters["tour_subcells"] = tour->second;
+  const auto entered = plan.statistics.find("subcells_entered");
+  if (entered != plan.statistics.end()) state.counters["subcells_entered"] = entered->second;
   state.counters["t_plan"] = tPlan;
   state.counters["t_validate"] = tValidate;
   state.counters["t_metrics"] = tMetrics;
   state.counters["s_per_step"] = (tPlan + tValidate) / steps;
 }
-BENCHMARK(BM_TeamPlan)->Arg(10)->Arg(14)->Arg(20)->Arg(30)->Arg(50)->Arg(70)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_TeamPlan, multi_stc_balanced, std::string("multi_stc_balanced"))->Arg(10)->Arg(14)->Arg(20)->Arg(30)->Arg(50)->Arg(70)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_TeamPlan, multi_st, std::string("multi_st"))->Arg(10)->Arg(14)->Arg(20)->Arg(30)->Arg(50)->Arg(70)->Arg(100)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
