@@ -152,35 +152,49 @@ void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::
   };
   for (const Robot& r : robots)
     if (r.start && cellOf(*r.start) >= 0) placed.push_back(cellOf(*r.start));
-  if (placed.empty()) {   // the documented default start first
+  // within r + a moving obstacle's radius of its first place (with a margin; checkProblem decides exactly)
+  auto nearObstacle = [&](long v, const Rational& radius) {
+    if (obstacles.empty()) return false;
+    const PointD c = waypoint(v);
+    for (const MovingObstacle& m : obstacles) {
+      if (m.waypoints.empty()) continue;
+      const double dx = c.x - m.waypoints.front().p.x, dy = c.y - m.waypoints.front().p.y;
+      const double reach = Rational(radius + m.radius).get_d() * (1 + 1e-9) + 1e-9;
+      if (dx * dx + dy * dy < reach * reach) return true;
+    }
+    return false;
+  };
+  if (placed.empty()) {   // the documented default start first, or the nearest sub-cell to it clear of the obstacles' first places
     const std::optional<Point> d = defaultStart(cells);
     if (!d || cellOf(*d) < 0) throw InputError("--robots", std::to_string(robots.size()), "no free mega-cell to place the robots in");
-    placed.push_back(cellOf(*d));
+    long first = cellOf(*d);
+    Robot* r0 = nullptr;
     for (Robot& r : robots)
       if (!r.start) {
-        r.start = exactly(waypoint(placed.back()));
+        r0 = &r;
         break;
       }
+    if (r0 && nearObstacle(first, r0->radius)) {
+      const std::vector<int> dist = graph::gridDistances(cols, rows, {first}, [&](int v) { return usable(v % cols, v / cols); });
+      long best = -1;
+      for (long v = 0; v < static_cast<long>(dist.size()); ++v)
+        if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] < dist[static_cast<std::size_t>(best)]) &&
+            !nearObstacle(v, r0->radius))
+          best = v;
+      if (best >= 0) first = best;   // else checkProblem names the obstacle
+    }
+    placed.push_back(first);
+    if (r0) r0->start = exactly(waypoint(first));
   }
   for (Robot& r : robots) {
     if (r.start) continue;
     // the farthest reachable sub-cell from those placed, first in row order, not where a moving
-    // obstacle starts (within r + its radius, with a margin; checkProblem decides exactly)
+    // obstacle starts
     const std::vector<int> dist = graph::gridDistances(cols, rows, placed, [&](int v) { return usable(v % cols, v / cols); });
-    auto nearObstacle = [&](long v) {
-      if (obstacles.empty()) return false;
-      const PointD c = waypoint(v);
-      for (const MovingObstacle& m : obstacles) {
-        if (m.waypoints.empty()) continue;
-        const double dx = c.x - m.waypoints.front().p.x, dy = c.y - m.waypoints.front().p.y;
-        const double reach = Rational(r.radius + m.radius).get_d() * (1 + 1e-9) + 1e-9;
-        if (dx * dx + dy * dy < reach * reach) return true;
-      }
-      return false;
-    };
+    auto nearObstacle1 = [&](long v) { return nearObstacle(v, r.radius); };
     long best = -1;
     for (long v = 0; v < static_cast<long>(dist.size()); ++v)
-      if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] > dist[static_cast<std::size_t>(best)]) && !nearObstacle(v))
+      if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] > dist[static_cast<std::size_t>(best)]) && !nearObstacle1(v))
         best = v;
     if (best < 0) throw InputError("--robots", std::to_string(robots.size()), "more robots than sub-cells of free mega-cells reachable from the first" +
                                                                   std::string(obstacles.empty() ? "" : " and clear of the moving obstacles' first places"));
