@@ -64,7 +64,6 @@
 #include <coverkit/planners/sensor.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <chrono>
 #include <deque>
@@ -125,7 +124,7 @@ public:
         moving_(!ctx.problem.movingObstacles.empty()), horizon_(sensor.horizon()),
         cols_(cells_.subCols()), rows_(cells_.subRows()), mcols_(cells_.megaCols()),
         known_(static_cast<std::size_t>(cols_) * rows_, -1), entered_(known_.size(), -1),
-        megaKnown_(cells_.megaCount(), -1), owner_(cells_.megaCount(), -1) {}
+        megaKnown_(cells_.megaCount(), -1), owner_(cells_.megaCount(), -1), parent_(known_.size(), -1), searchOf_(known_.size(), 0) {}
 
   /// Runs the team from its start cells; returns the status and fills the statistics.
   PlanStatus run(const std::vector<CellIndex>& starts, const TerminationCondition& stop, Plan& plan);
@@ -151,18 +150,24 @@ private:
     return c >= 0 && r >= 0 && c < cols_ && r < rows_ ? id(c, r) : -1;
   }
   bool knownFree(long v) const { return v >= 0 && known_[static_cast<std::size_t>(v)] == 1; }
+  int distance(long a, long b) const { return std::abs(colOf(a) - colOf(b)) + std::abs(rowOf(a) - rowOf(b)); }
   bool megaFull(long m) const { return megaKnown_[static_cast<std::size_t>(m)] == 4; }
 
   void sense(std::size_t i);
-  void enter(std::size_t i, long v, long t);
+  void enter(std::size_t i, long v);
   void nextWaypoints(std::size_t i);
   void pushMoveOn(std::size_t i);
   bool findTarget(std::size_t i, long t);
-  bool occupied(std::size_t self, long v) const;
   bool allowed(std::size_t self, long from, long to) const;
   int blockerOf(std::size_t self, long v) const;
+  template <class Pass, class Goal>
+  std::vector<long> breadthFirst(long from, const Pass& pass, const Goal& goal, int limit, std::size_t cap);
   std::vector<long> shortestWay(std::size_t self, long from, long goal, long avoid, int limit, long t = -1);
-  bool act(std::size_t i, KbAction a, long t, int blocker);
+  bool heldByObstacle(std::size_t i, long v, long t);
+  static void goVia(RobotState& R, const std::vector<long>& way);
+  void passOver(std::size_t i);
+  void becomeIdle(std::size_t i);
+  bool act(std::size_t i, KbAction a, long t);
   bool detour(std::size_t i, long t);
   bool skip(std::size_t i, long t);
   bool stepAside(std::size_t i, long avoid, bool comeBack, long t);
@@ -191,8 +196,11 @@ private:
   std::vector<RobotState> robots_;
   std::vector<long> next_;            ///< this step's decisions: the cell at t + 1, -1 not decided
   std::map<long, std::size_t> targetOf_;   ///< reserved travel targets
+  std::vector<long> parent_;          ///< the breadth-first searches' scratch: where each cell was reached from ...
+  std::vector<unsigned> searchOf_;    ///< ... in the search of this number
+  unsigned search_ = 0;
   long version_ = 0;                  ///< bumps when a new target may have appeared
-  std::size_t repeats_ = 0, iterations_ = 0, rulesFired_ = 0, enteredTotal_ = 0;
+  std::size_t repeats_ = 0, rulesFired_ = 0, enteredTotal_ = 0;
   std::map<std::string, std::size_t> fired_;
 };
 
@@ -216,7 +224,7 @@ void Team::sense(std::size_t i) {
   }
 }
 
-void Team::enter(std::size_t i, long v, long t) {
+void Team::enter(std::size_t i, long v) {
   RobotState& R = robots_[i];
   const long before = R.cell;
   if (v != before) sensor_.moveTo(i, cellOf(v));
@@ -232,7 +240,6 @@ void Team::enter(std::size_t i, long v, long t) {
     }
   }
   if (before < 0 || megaOf(before) != megaOf(v)) sense(i);
-  (void)t;
 }
 
 // The move that follows processing the top frame's quadrant k - 1: to quadrant k, or out of the
@@ -306,17 +313,11 @@ void Team::nextWaypoints(std::size_t i) {
   }
 }
 
-bool Team::occupied(std::size_t self, long v) const {
-  for (std::size_t j = 0; j < robots_.size(); ++j)
-    if (j != self && (robots_[j].cell == v || next_[j] == v)) return true;
-  return false;
-}
-
 // The step rules: never into a cell another robot is in now or at the next step, never out of one
 // another robot enters at the next step.
 bool Team::allowed(std::size_t self, long from, long to) const {
   if (to == from) return true;
-  if (occupied(self, to)) return false;
+  if (blockerOf(self, to) >= 0) return false;
   for (std::size_t j = 0; j < robots_.size(); ++j)
     if (j != self && next_[j] == from) return false;
   return true;
@@ -328,74 +329,102 @@ int Team::blockerOf(std::size_t self, long v) const {
   return -1;
 }
 
-// Breadth-first over sensed free sub-cells, avoiding `avoid` and the cells robots are in; at most
-// `limit` moves (0: no limit). The way after `from`, ending at goal; empty when none.
-std::vector<long> Team::shortestWay(std::size_t self, long from, long goal, long avoid, int limit, long t) {
-  if (from == goal) return {};
-  std::map<long, long> parent{{from, -1}};
+// Breadth first from `from` over sensed free sub-cells (4-neighbours in direction order) that
+// `pass` lets in, at most `limit` moves (0: no limit) and `cap` cells: the way after `from` to the
+// first cell reached for which `goal` holds; empty when none.
+template <class Pass, class Goal>
+std::vector<long> Team::breadthFirst(long from, const Pass& pass, const Goal& goal, int limit, std::size_t cap) {
+  ++search_;
+  searchOf_[static_cast<std::size_t>(from)] = search_;
   std::deque<std::pair<long, int>> open{{from, 0}};
+  std::size_t reached = 1;
   while (!open.empty()) {
     const auto [v, depth] = open.front();
     open.pop_front();
     if (limit > 0 && depth >= limit) continue;
     for (int d = 0; d < 4; ++d) {
       const long w = step(v, d);
-      if (w < 0 || !knownFree(w) || w == avoid || parent.count(w)) continue;
-      if (w != goal && blockerOf(self, w) >= 0 && limit > 0) continue;
-      // a way round keeps off cells a moving obstacle holds now (as far as the sensor reaches)
-      if (t >= 0 && moving_ && w != goal && std::abs(colOf(w) - colOf(robots_[self].cell)) + std::abs(rowOf(w) - rowOf(robots_[self].cell)) <= horizon_ &&
-          !sensor_.moveClear(self, cellOf(w), cellOf(w), t))
-        continue;
-      parent[w] = v;
-      if (w == goal) {
+      if (w < 0 || !knownFree(w) || searchOf_[static_cast<std::size_t>(w)] == search_ || !pass(w)) continue;
+      searchOf_[static_cast<std::size_t>(w)] = search_;
+      parent_[static_cast<std::size_t>(w)] = v;
+      if (goal(w)) {
         std::vector<long> way;
-        for (long x = goal; x != from; x = parent[x]) way.push_back(x);
+        for (long x = w; x != from; x = parent_[static_cast<std::size_t>(x)]) way.push_back(x);
         std::reverse(way.begin(), way.end());
         return way;
       }
+      if (++reached > cap) return {};
       open.push_back({w, depth + 1});
     }
   }
   return {};
 }
 
+// A cell within the sensor's reach that a moving obstacle holds at step t.
+bool Team::heldByObstacle(std::size_t i, long v, long t) {
+  return moving_ && distance(v, robots_[i].cell) <= horizon_ && !sensor_.moveClear(i, cellOf(v), cellOf(v), t);
+}
+
+// A shortest way to `goal` avoiding `avoid`; a way of at most `limit` moves (a way round) also keeps
+// off the cells robots are in; with a step t, off cells a moving obstacle holds then.
+std::vector<long> Team::shortestWay(std::size_t self, long from, long goal, long avoid, int limit, long t) {
+  if (from == goal) return {};
+  auto pass = [&](long w) {
+    if (w == avoid) return false;
+    if (w == goal) return true;
+    return !(limit > 0 && blockerOf(self, w) >= 0) && !(t >= 0 && heldByObstacle(self, w, t));
+  };
+  return breadthFirst(from, pass, [&](long w) { return w == goal; }, limit, static_cast<std::size_t>(-1));
+}
+
+// The robot's queue: `way` (after the robot's cell, ending at the queue's first waypoint) in front
+// of what follows that waypoint, which keeps its tag; the rest of the way is a way round.
+void Team::goVia(RobotState& R, const std::vector<long>& way) {
+  const Waypoint goal = R.queue.front();
+  R.queue.pop_front();
+  for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goal.tag : Tag::kDetour});
+}
+
+// The walk round the tree goes on past a waypoint dropped from an empty queue: the quadrant is
+// passed over (travel comes back for it).
+void Team::passOver(std::size_t i) {
+  RobotState& R = robots_[i];
+  if (R.queue.empty() && R.mode == Mode::kTree && !R.stack.empty()) {
+    if (R.stack.back().k < 4) ++R.stack.back().k;
+    pushMoveOn(i);
+  }
+}
+
+// Nothing to do now: its target (if any) released; it looks for one at its next decision.
+void Team::becomeIdle(std::size_t i) {
+  RobotState& R = robots_[i];
+  release(i);
+  R.queue.clear();
+  R.mode = Mode::kIdle;
+  R.lastChecked = -1;
+}
+
 // The nearest sub-cell of an unclaimed sensed free mega-cell, or a sensed free one never entered,
 // not reserved by another robot and not deferred; the way there becomes the robot's queue.
 bool Team::findTarget(std::size_t i, long t) {
   RobotState& R = robots_[i];
-  std::vector<long> parent(known_.size(), -2);
-  std::deque<long> open{R.cell};
-  parent[static_cast<std::size_t>(R.cell)] = -1;
-  while (!open.empty()) {
-    const long v = open.front();
-    open.pop_front();
-    const bool wanted = entered_[static_cast<std::size_t>(v)] < 0;   // (in an unclaimed free mega-cell it grows a new tree there)
+  auto wanted = [&](long v) {   // (in an unclaimed free mega-cell it grows a new tree there)
+    if (entered_[static_cast<std::size_t>(v)] >= 0) return false;
     const auto reserved = targetOf_.find(v);
     const auto deferred = R.deferredUntil.find(v);
     const auto given = R.gaveUp.find(v);
-    if (wanted && (reserved == targetOf_.end() || reserved->second == i) && (deferred == R.deferredUntil.end() || deferred->second <= t) &&
-        (given == R.gaveUp.end() || given->second < kGiveUpAfter)) {
-      R.target = v;
-      targetOf_[v] = i;
-      R.queue.clear();
-      std::vector<long> way;
-      for (long x = v; x != R.cell; x = parent[static_cast<std::size_t>(x)]) way.push_back(x);
-      for (auto it = way.rbegin(); it != way.rend(); ++it) R.queue.push_back({*it, Tag::kTravel});
-      R.mode = Mode::kTravel;
-      return true;
-    }
-    for (int d = 0; d < 4; ++d) {
-      const long w = step(v, d);
-      if (w < 0 || !knownFree(w) || parent[static_cast<std::size_t>(w)] != -2) continue;
-      // the way keeps off cells a moving obstacle holds now, as far as the sensor reaches
-      if (moving_ && std::abs(colOf(w) - colOf(R.cell)) + std::abs(rowOf(w) - rowOf(R.cell)) <= horizon_ &&
-          !sensor_.moveClear(i, cellOf(w), cellOf(w), t))
-        continue;
-      parent[static_cast<std::size_t>(w)] = v;
-      open.push_back(w);
-    }
-  }
-  return false;
+    return (reserved == targetOf_.end() || reserved->second == i) && (deferred == R.deferredUntil.end() || deferred->second <= t) &&
+           (given == R.gaveUp.end() || given->second < kGiveUpAfter);
+  };
+  // the way keeps off cells a moving obstacle holds now, as far as the sensor reaches
+  const std::vector<long> way = breadthFirst(R.cell, [&](long w) { return !heldByObstacle(i, w, t); }, wanted, 0, static_cast<std::size_t>(-1));
+  if (way.empty()) return false;
+  R.target = way.back();
+  targetOf_[R.target] = i;
+  R.queue.clear();
+  for (long v : way) R.queue.push_back({v, Tag::kTravel});
+  R.mode = Mode::kTravel;
+  return true;
 }
 
 void Team::release(std::size_t i) {
@@ -435,9 +464,7 @@ bool Team::detour(std::size_t i, long t) {
     R.queue.push_front(blocked);
     return false;
   }
-  const Waypoint goalWp = R.queue.front();
-  R.queue.pop_front();
-  for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goalWp.tag : Tag::kDetour});
+  goVia(R, way);
   return true;
 }
 
@@ -464,26 +491,17 @@ bool Team::skip(std::size_t i, long t) {
         R.deferredUntil[R.target] = t + kDeferSteps;
         if (static_cast<double>(t) * timing_.step > lastObstacle_) ++R.gaveUp[R.target];   // given up only once nothing moves any more
       }
-      release(i);
-      R.queue.clear();
-      R.mode = Mode::kIdle;
-      R.lastChecked = -1;
+      becomeIdle(i);
       return true;
     }
     default: {
       // a cell of the walk (or of a way round): dropped and left for later (travel comes back for
       // it); on the walk round a tree the quadrant is passed over and the robot goes on to the next
       R.queue.pop_front();
-      if (R.queue.empty() && R.mode == Mode::kTree && !R.stack.empty()) {
-        if (R.stack.back().k < 4) ++R.stack.back().k;
-        pushMoveOn(i);
-      }
+      passOver(i);
       if (R.queue.empty()) return true;
       const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, blocked.cell, 0, t);
-      if (way.empty()) return true;   // not reachable now: the next refusal skips on
-      const Waypoint goalWp = R.queue.front();
-      R.queue.pop_front();
-      for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goalWp.tag : Tag::kDetour});
+      if (!way.empty()) goVia(R, way);   // else not reachable now: the next refusal skips on
       return true;
     }
   }
@@ -508,22 +526,16 @@ void Team::startTree(std::size_t i) {
 // dropped (on the walk round a tree the walk goes on; travel comes back for what is left).
 void Team::repair(std::size_t i) {
   RobotState& R = robots_[i];
-  auto adjacent = [&](long v) { return std::abs(colOf(v) - colOf(R.cell)) + std::abs(rowOf(v) - rowOf(R.cell)) <= 1; };
   for (int guard = 0; guard < 64; ++guard) {
     if (R.queue.empty() && R.mode == Mode::kTree) nextWaypoints(i);
-    if (R.queue.empty() || adjacent(R.queue.front().cell)) return;
+    if (R.queue.empty() || distance(R.queue.front().cell, R.cell) <= 1) return;
     const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, -1, 0);
     if (!way.empty()) {
-      const Waypoint goalWp = R.queue.front();
-      R.queue.pop_front();
-      for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], h + 1 == way.size() ? goalWp.tag : Tag::kDetour});
+      goVia(R, way);
       return;
     }
     R.queue.pop_front();
-    if (R.queue.empty() && R.mode == Mode::kTree && !R.stack.empty()) {
-      if (R.stack.back().k < 4) ++R.stack.back().k;
-      pushMoveOn(i);
-    }
+    passOver(i);
   }
   R.queue.clear();   // nothing of it reachable: the tree is left for travel
   R.stack.clear();
@@ -540,25 +552,9 @@ void Team::clearTheWay(std::size_t i, std::size_t other) {
   std::vector<long> onWay{O.cell};
   for (std::size_t m = 0; m < O.queue.size() && m < 64; ++m) onWay.push_back(O.queue[m].cell);
   auto inWay = [&](long v) { return std::find(onWay.begin(), onWay.end(), v) != onWay.end(); };
-  std::map<long, long> parent{{R.cell, -1}};
-  std::deque<long> open{R.cell};
-  while (!open.empty()) {
-    const long v = open.front();
-    open.pop_front();
-    if (v != R.cell && !inWay(v) && blockerOf(i, v) < 0) {
-      std::vector<long> way;
-      for (long x = v; x != R.cell; x = parent[x]) way.push_back(x);
-      for (auto it = way.rbegin(); it != way.rend(); ++it) R.queue.push_back({*it, Tag::kAside});
-      return;
-    }
-    if (parent.size() > 4096) return;
-    for (int d = 0; d < 4; ++d) {
-      const long w = step(v, d);
-      if (w < 0 || !knownFree(w) || w == O.cell || parent.count(w)) continue;
-      parent[w] = v;
-      open.push_back(w);
-    }
-  }
+  const std::vector<long> way =
+      breadthFirst(R.cell, [&](long w) { return w != O.cell; }, [&](long v) { return !inWay(v) && blockerOf(i, v) < 0; }, 0, 4096);
+  for (long v : way) R.queue.push_back({v, Tag::kAside});
 }
 
 // To a free neighbour that no robot is in or enters, not `avoid` and not where the blocking robot
@@ -612,7 +608,7 @@ long Team::flee(std::size_t i, long t) {
     for (int d = -1; d < 4; ++d) {
       const long w = d < 0 ? v : step(v, d);
       if (w < 0 || !knownFree(w) || parent.count({w, j + 1})) continue;
-      if (std::abs(colOf(w) - colOf(from)) + std::abs(rowOf(w) - rowOf(from)) > horizon_ - 1) continue;
+      if (distance(w, from) > horizon_ - 1) continue;
       if (j == 0 && !allowed(i, from, w)) continue;
       if (!sensor_.moveClear(i, cellOf(v), cellOf(w), t + j)) continue;
       parent[{w, j + 1}] = v;
@@ -622,14 +618,13 @@ long Team::flee(std::size_t i, long t) {
   return firstMove(deepest);
 }
 
-bool Team::act(std::size_t i, KbAction a, long t, int blocker) {
+bool Team::act(std::size_t i, KbAction a, long t) {
   switch (a) {
     case KbAction::kWait: return false;
     case KbAction::kDetour: return detour(i, t);
     case KbAction::kGiveWay: return stepAside(i, robots_[i].queue.front().cell, true, t);
     case KbAction::kSkip: return skip(i, t);
   }
-  (void)blocker;
   return false;
 }
 
@@ -641,7 +636,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     RobotState& R = robots_[i];
     R.weights.clear();
     for (const KbRule& r : kb_.rules) R.weights.push_back(r.weight);
-    enter(i, id(starts[i].col, starts[i].row), 0);
+    enter(i, id(starts[i].col, starts[i].row));
   }
   // the roots: robots in index order claim their start mega-cells
   for (std::size_t i = 0; i < k; ++i) {
@@ -649,13 +644,9 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     startTree(i);
     R.route.push_back(cellOf(R.cell));   // step 1: onto the start sub-cell's centre
   }
-  double lastObstacle = 0;
-  for (const MovingObstacle& m : ctx_.problem.movingObstacles) lastObstacle = std::max(lastObstacle, m.waypoints.back().t);
-  lastObstacle_ = lastObstacle;
-  std::size_t freeKnownBound = 0;
-  for (int r = 0; r < rows_; ++r)
-    for (int c = 0; c < cols_; ++c) freeKnownBound += cells_.insideSub(c, r) ? 1 : 0;
-  const long maxSteps = 64L * static_cast<long>(freeKnownBound) + static_cast<long>(lastObstacle / timing_.step) + 10'000;
+  for (const MovingObstacle& m : ctx_.problem.movingObstacles) lastObstacle_ = std::max(lastObstacle_, m.waypoints.back().t);
+  const double lastObstacle = lastObstacle_;
+  const long maxSteps = 64L * static_cast<long>(known_.size()) + static_cast<long>(lastObstacle / timing_.step) + 10'000;
   long t = 1, lastMove = 1, lastProgress = 1;
   std::size_t enteredBefore = enteredTotal_;
   // a team that enters nothing new for this long is going round in circles (it needs at most a
@@ -663,19 +654,6 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
   const long noProgress = 4L * (cols_ + rows_) + kStallSteps;
   PlanStatus status = PlanStatus::kExactSolution;
   std::string why;
-  auto debugDump = [&]() {
-    if (std::getenv("COVERKIT_DEBUG_TEAM"))
-        for (std::size_t i = 0; i < k; ++i) {
-          const RobotState& R = robots_[i];
-          std::fprintf(stderr, "robot %zu at (%d,%d) mode %d queue %zu front (%d,%d) tag %d target %ld blocked %d stack %zu\n", i, colOf(R.cell), rowOf(R.cell),
-                       static_cast<int>(R.mode), R.queue.size(), R.queue.empty() ? -1 : colOf(R.queue.front().cell), R.queue.empty() ? -1 : rowOf(R.queue.front().cell),
-                       R.queue.empty() ? -1 : static_cast<int>(R.queue.front().tag), R.target, R.blocked, R.stack.size());
-          for (std::size_t m = R.route.size() > 24 ? R.route.size() - 24 : 0; m < R.route.size(); ++m) std::fprintf(stderr, " (%d,%d)", R.route[m].col, R.route[m].row);
-          std::fprintf(stderr, "\n queue:");
-          for (std::size_t m = 0; m < std::min<std::size_t>(R.queue.size(), 12); ++m) std::fprintf(stderr, " (%d,%d)%d", colOf(R.queue[m].cell), rowOf(R.queue[m].cell), static_cast<int>(R.queue[m].tag));
-          std::fprintf(stderr, "\n");
-        }
-  };
   for (;; ++t) {
     if ((t & 63) == 0 && stop.expired()) {
       status = PlanStatus::kTimeout;
@@ -692,15 +670,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     for (std::size_t i = 0; i < k; ++i) {
       RobotState& R = robots_[i];
       // what to do next
-      if (R.mode == Mode::kTravel && R.target >= 0) {
-        const bool stillWanted = entered_[static_cast<std::size_t>(R.target)] < 0;
-        if (!stillWanted) {
-          release(i);
-          R.queue.clear();
-          R.mode = Mode::kIdle;
-          R.lastChecked = -1;
-        }
-      }
+      if (R.mode == Mode::kTravel && R.target >= 0 && entered_[static_cast<std::size_t>(R.target)] >= 0) becomeIdle(i);   // entered by another
       if (R.queue.empty() && R.mode == Mode::kTree) {
         nextWaypoints(i);
         if (R.queue.empty()) {
@@ -767,7 +737,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           R.pendingRule = rule;
           R.pendingSince = t;
         }
-        if (!act(i, kb_.rules[static_cast<std::size_t>(rule)].action, t, blocker)) break;
+        if (!act(i, kb_.rules[static_cast<std::size_t>(rule)].action, t)) break;
         repair(i);
       }
       if (to == R.cell && moving_ && !stayClear(i, R.cell, t, horizon_)) {   // reflex: an obstacle is coming
@@ -800,8 +770,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     for (std::size_t i = 0; i < k; ++i) {
       RobotState& R = robots_[i];
       if (next_[i] != R.cell) {
-        ++iterations_;
-        enter(i, next_[i], t + 1);
+        enter(i, next_[i]);
         if (R.mode == Mode::kTravel && R.cell == R.target) {   // arrived: a new tree where the mega-cell is free and unclaimed
           release(i);
           R.queue.clear();
@@ -829,18 +798,15 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     if (t - lastProgress > noProgress && static_cast<double>(t) * timing_.step > lastObstacle) {
       status = PlanStatus::kPartialCoverage;
       why = "no robot entered a new sub-cell for " + std::to_string(noProgress) + " steps";
-      debugDump();
       break;
     }
     if (t - lastMove > kStallSteps && static_cast<double>(t) * timing_.step > lastObstacle) {
       status = PlanStatus::kPartialCoverage;
       why = kbOn_ ? "no robot could move for " + std::to_string(kStallSteps) + " steps"
                   : "deadlock: the robots wait for each other (kb=off waits until a cell clears; kb=on resolves it)";
-      debugDump();
       break;
     }
   }
-  // every robot's route ends where it stays; drop the trailing steps where nobody moved
   // what was left: sensed free sub-cells joined to the robots over sensed free ones, never entered
   std::size_t sensedFree = 0, enteredCount = 0;
   std::vector<char> seen(known_.size(), 0);
@@ -963,10 +929,7 @@ Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params
   // One robot in a static world on a grid whose sub-cell centres are not doubles: the walk is placed
   // as the other sub-cell planners place theirs (walk_path.h: each run its own safe double, a path
   // without a timeline, sub-cells no double path can cross left out and the team run again).
-  bool doubles = true;
-  for (int c = 0; c < cells.subCols() && doubles; ++c) doubles = Rational(timing.x[static_cast<std::size_t>(c)]) == cells.subCenter(c, 0).x;
-  for (int r = 0; r < cells.subRows() && doubles; ++r) doubles = Rational(timing.y[static_cast<std::size_t>(r)]) == cells.subCenter(0, r).y;
-  if (k == 1 && problem.movingObstacles.empty() && !doubles && !given) {
+  if (k == 1 && problem.movingObstacles.empty() && !given && !centresAreDoubles(cells)) {
     const bool unsafe = withoutUnplaceableCells(ctx, starts[0], plan, [&](const PlanningContext& c) -> std::vector<CellIndex> {
       TeamSensor sensor(c.cells, starts, moveClear);
       Team team(c, timing, kb, kbOn, sensor);

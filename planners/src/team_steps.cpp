@@ -29,6 +29,14 @@ StepTiming makeStepTiming(const PlanningContext& ctx, double step) {
   return timing;
 }
 
+bool centresAreDoubles(const CellGrid& cells) {
+  for (int c = 0; c < cells.subCols(); ++c)
+    if (Rational(toDouble(cells.subCenter(c, 0).x)) != cells.subCenter(c, 0).x) return false;
+  for (int r = 0; r < cells.subRows(); ++r)
+    if (Rational(toDouble(cells.subCenter(0, r).y)) != cells.subCenter(0, r).y) return false;
+  return true;
+}
+
 void checkTeamGrid(const PlanningContext& ctx, const std::string& planner) {
   const Problem& problem = ctx.problem;
   const std::size_t k = problem.robots.size();
@@ -42,9 +50,7 @@ void checkTeamGrid(const PlanningContext& ctx, const std::string& planner) {
   // is both clear of walls and 2r from the other robot. So a team needs centres that are doubles,
   // or a sub-cell a little larger than 2r.
   const CellGrid& cells = ctx.cells;
-  bool doubles = true;
-  for (int c = 0; c < cells.subCols() && doubles; ++c) doubles = Rational(toDouble(cells.subCenter(c, 0).x)) == cells.subCenter(c, 0).x;
-  for (int r = 0; r < cells.subRows() && doubles; ++r) doubles = Rational(toDouble(cells.subCenter(0, r).y)) == cells.subCenter(0, r).y;
+  const bool doubles = centresAreDoubles(cells);
   const Box box = problem.workspace.bbox();
   const double far = std::max({std::abs(box.xmin.get_d()), std::abs(box.xmax.get_d()), std::abs(box.ymin.get_d()), std::abs(box.ymax.get_d()), 1.0});
   const double slack = Rational(cells.subSize() - 2 * problem.robots[0].radius).get_d();

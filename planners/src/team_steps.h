@@ -22,6 +22,9 @@ struct StepTiming {
 };
 StepTiming makeStepTiming(const PlanningContext& ctx, double step);
 
+/// Every sub-cell centre of the grid is a double (then robots stand exactly at the centres).
+bool centresAreDoubles(const CellGrid& cells);
+
 /// InputError unless the team is of equal discs on a grid where two robots side by side can stand
 /// at sub-cell centres exactly D apart (centres that are doubles, or D a little larger than 2r).
 void checkTeamGrid(const PlanningContext& ctx, const std::string& planner);
