@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -139,6 +140,8 @@ KnowledgeBase parseKnowledgeBase(const std::string& text, const std::string& sou
 
 KnowledgeBase loadKnowledgeBase(const std::string& spec) {
   if (spec == "on") return parseKnowledgeBase(defaultKnowledgeBaseText(), "the shipped knowledge base");
+  std::error_code ec;
+  if (std::filesystem::is_directory(spec, ec)) throw InputError(spec, "", "is a directory, not a knowledge base file (--param kb=FILE)");
   std::ifstream in(spec, std::ios::binary);
   if (!in) throw InputError(spec, "", "cannot read the knowledge base file (--param kb=FILE; on or off for the shipped rules or none)");
   std::ostringstream text;

@@ -229,6 +229,12 @@ TEST(KnowledgeBase, BadRuleFilesNameThePlace) {
             std::string::npos);
   EXPECT_NE(error("format: [\n").find("not YAML"), std::string::npos);
   EXPECT_THROW(planners::loadKnowledgeBase("/nonexistent/kb.yaml"), InputError);
+  try {
+    planners::loadKnowledgeBase(::testing::TempDir());
+    ADD_FAILURE() << "a directory was read as a knowledge base";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
 }
 
 // Two robots meet head on in a corridor one sub-cell wide with a bay: with the knowledge base one
