@@ -82,7 +82,7 @@ constexpr long kStallSteps = 200;
 // directions 0 east, 1 north, 2 west, 3 south (graph::kDx, kDy)
 constexpr int kDc[4] = {1, 0, -1, 0}, kDr[4] = {0, 1, 0, -1};
 
-enum class Tag { kTree, kCross, kSide, kTravel, kDetour, kAside };
+enum class Tag { kTree, kCross, kSide, kTravel, kDetour, kAside, kEvade };
 
 struct Waypoint {
   long cell;
@@ -173,11 +173,12 @@ private:
   bool stepAside(std::size_t i, long avoid, bool comeBack, long t);
   bool stayClear(std::size_t i, long cell, long t, int steps);
   bool safeMove(std::size_t i, long from, long to, long t);
-  long flee(std::size_t i, long t);
+  std::vector<long> fleeWay(std::size_t i, long t, bool throughRobots, bool& haven);
+  long evade(std::size_t i, long t);
   void release(std::size_t i);
   void repair(std::size_t i);
   void startTree(std::size_t i);
-  void clearTheWay(std::size_t i, std::size_t other);
+  void clearTheWay(std::size_t i, std::size_t other, long t);
 
   const PlanningContext& ctx_;
   const CellGrid& cells_;   // sizes and coordinates only: what is free comes from the sensor
@@ -546,14 +547,18 @@ void Team::repair(std::size_t i) {
 
 // An idle robot stands in the way of `other`: it goes to the nearest sensed free cell that is not on
 // other's way (its queue) and that no robot holds, by a shortest way that does not pass other.
-void Team::clearTheWay(std::size_t i, std::size_t other) {
+void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
   RobotState& R = robots_[i];
   const RobotState& O = robots_[other];
   std::vector<long> onWay{O.cell};
   for (std::size_t m = 0; m < O.queue.size() && m < 64; ++m) onWay.push_back(O.queue[m].cell);
   auto inWay = [&](long v) { return std::find(onWay.begin(), onWay.end(), v) != onWay.end(); };
-  const std::vector<long> way =
-      breadthFirst(R.cell, [&](long w) { return w != O.cell; }, [&](long v) { return !inWay(v) && blockerOf(i, v) < 0; }, 0, 4096);
+  // among moving obstacles: over cells within the sensor's reach that no obstacle holds now, to one
+  // that stays clear over the horizon
+  auto open = [&](long w) { return !moving_ || (distance(w, R.cell) < horizon_ && sensor_.moveClear(i, cellOf(w), cellOf(w), t)); };
+  const std::vector<long> way = breadthFirst(
+      R.cell, [&](long w) { return w != O.cell && open(w); },
+      [&](long v) { return !inWay(v) && blockerOf(i, v) < 0 && (!moving_ || stayClear(i, v, t, horizon_)); }, 0, 4096);
   for (long v : way) R.queue.push_back({v, Tag::kAside});
 }
 
@@ -587,35 +592,89 @@ bool Team::safeMove(std::size_t i, long from, long to, long t) {
   return !moving_ || (sensor_.moveClear(i, cellOf(from), cellOf(to), t) && stayClear(i, to, t + 1, horizon_));
 }
 
-// The robot's place is about to be reached by an obstacle: the first move of a way, found breadth
-// first in space and time over sensed free sub-cells, that stays clear for the sensor's horizon
-// (the first move also keeps the step rules for robots). The robot's own cell when there is none.
-long Team::flee(std::size_t i, long t) {
+// The robot's place is about to be reached by an obstacle. Its way out, found breadth first in space
+// and time over sensed free sub-cells, each move clear of the obstacles: to the earliest haven, a
+// cell that then stays clear to the end of the sensor's horizon (the robot leaves at once rather
+// than at the last moment, which keeps the most ways open). The way's cells at steps t + 1, t + 2, …
+// (a wait repeats a cell); `haven` says whether it ends in one, else it is the way that stays clear
+// longest. The first move keeps the step rules for robots, and the way keeps off the cells robots
+// hold or enter now, unless `throughRobots`: then those count as free (the way out of a robot boxed
+// in by robots, which are asked to make room).
+std::vector<long> Team::fleeWay(std::size_t i, long t, bool throughRobots, bool& haven) {
   const long from = robots_[i].cell;
   std::map<std::pair<long, int>, long> parent{{{from, 0}, -1}};
-  std::deque<std::pair<long, int>> open{{from, 0}};
-  std::pair<long, int> deepest{from, 0};   // where no way stays clear for the whole horizon: the one that stays clear longest
-  auto firstMove = [&](std::pair<long, int> st) {
-    long first = st.first;
-    for (; st.second > 1; st = {parent[st], st.second - 1}) first = parent[st];
-    return st.second == 0 ? from : first;
+  std::map<long, int> clearFrom;   // cell → the first step (from t) after which it stays clear to the horizon
+  auto havenAt = [&](long v, int j) {
+    auto it = clearFrom.find(v);
+    if (it == clearFrom.end()) {
+      int first = horizon_;
+      while (first > 0 && sensor_.moveClear(i, cellOf(v), cellOf(v), t + first - 1)) --first;
+      it = clearFrom.emplace(v, first).first;
+    }
+    return j >= it->second;
   };
+  auto wayTo = [&](std::pair<long, int> st) {
+    std::vector<long> way;
+    for (; st.second > 0; st = {parent[st], st.second - 1}) way.push_back(st.first);
+    std::reverse(way.begin(), way.end());
+    return way;
+  };
+  std::deque<std::pair<long, int>> open{{from, 0}};
+  std::pair<long, int> deepest{from, 0};
+  haven = false;
   while (!open.empty()) {
     const auto [v, j] = open.front();
     open.pop_front();
     if (j > deepest.second) deepest = {v, j};
-    if (j == horizon_) return firstMove({v, j});
+    if (j > 0 && havenAt(v, j)) {
+      haven = true;
+      return wayTo({v, j});
+    }
+    if (j == horizon_) continue;
     for (int d = -1; d < 4; ++d) {
       const long w = d < 0 ? v : step(v, d);
       if (w < 0 || !knownFree(w) || parent.count({w, j + 1})) continue;
       if (distance(w, from) > horizon_ - 1) continue;
-      if (j == 0 && !allowed(i, from, w)) continue;
+      if (!throughRobots && (j == 0 ? !allowed(i, from, w) : w != from && blockerOf(i, w) >= 0)) continue;
       if (!sensor_.moveClear(i, cellOf(v), cellOf(w), t + j)) continue;
       parent[{w, j + 1}] = v;
       open.push_back({w, j + 1});
     }
   }
-  return firstMove(deepest);
+  return wayTo(deepest);
+}
+
+// The reflex of a robot whose place an obstacle is about to reach: the move it makes now (its own
+// cell to wait). It takes the way to the earliest haven and comes back afterwards. Boxed in by
+// robots (a haven only through cells they hold), it queues that way, and the first robot on it,
+// when idle, makes room off it (clearTheWay). Where no way leads to a haven, the way that stays
+// clear longest.
+long Team::evade(std::size_t i, long t) {
+  RobotState& R = robots_[i];
+  while (!R.queue.empty() && R.queue.front().tag == Tag::kEvade) R.queue.pop_front();   // an earlier way out, replaced
+  bool haven = false;
+  std::vector<long> way = fleeWay(i, t, false, haven);
+  const Tag back = R.mode == Mode::kTravel ? Tag::kTravel : Tag::kAside;
+  if (!haven) {
+    bool through = false;
+    std::vector<long> out = fleeWay(i, t, true, through);
+    int b = -1;
+    for (std::size_t h = 0; through && h < out.size() && b < 0; ++h)
+      for (std::size_t j = 0; j < robots_.size() && b < 0; ++j)
+        if (j != i && robots_[j].cell == out[h]) b = static_cast<int>(j);
+    if (b >= 0) {
+      RobotState& B = robots_[static_cast<std::size_t>(b)];
+      if (B.mode == Mode::kIdle && B.queue.empty()) B.nudgedBy = static_cast<int>(i);
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      if (!out.empty() && out.front() == R.cell) out.erase(out.begin());
+      if (R.queue.empty() || R.queue.front().cell != R.cell) R.queue.push_front({R.cell, back});
+      for (std::size_t h = out.size(); h-- > 0;) R.queue.push_front({out[h], Tag::kEvade});
+      return R.cell;
+    }
+  }
+  if (way.empty() || way.front() == R.cell) return R.cell;
+  if (R.queue.empty() || R.queue.front().cell != R.cell) R.queue.push_front({R.cell, back});
+  return way.front();
 }
 
 bool Team::act(std::size_t i, KbAction a, long t) {
@@ -698,7 +757,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           if (!findTarget(i, t) && moving_ && static_cast<double>(t - 2 * horizon_) * timing_.step <= lastObstacle) R.retryAt = t + horizon_;
         }
       }
-      if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy));
+      if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t);
       R.nudgedBy = -1;
       if (!R.queue.empty() || R.mode != Mode::kIdle || R.retryAt >= 0) anyWork = true;
       // the move
@@ -712,10 +771,13 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           continue;
         }
         const bool robotsOk = allowed(i, R.cell, want);
-        const bool obstaclesOk = robotsOk && safeMove(i, R.cell, want, t);
+        // a way out was planned in space and time: its moves need only be clear when made
+        const bool obstaclesOk = robotsOk && (R.queue.front().tag == Tag::kEvade
+                                                  ? sensor_.moveClear(i, cellOf(R.cell), cellOf(want), t) && stayClear(i, want, t + 1, 1)
+                                                  : safeMove(i, R.cell, want, t));
         if (robotsOk && obstaclesOk) {
           to = want;
-          onPlan = R.queue.front().tag != Tag::kDetour && R.queue.front().tag != Tag::kAside;
+          onPlan = R.queue.front().tag != Tag::kDetour && R.queue.front().tag != Tag::kAside && R.queue.front().tag != Tag::kEvade;
           R.queue.pop_front();
           break;
         }
@@ -723,7 +785,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         const int blocker = robotsOk ? -1 : blockerOf(i, want);
         if (blocker >= 0 && robots_[static_cast<std::size_t>(blocker)].mode == Mode::kIdle && robots_[static_cast<std::size_t>(blocker)].queue.empty())
           robots_[static_cast<std::size_t>(blocker)].nudgedBy = static_cast<int>(i);
-        if (attempt > 0 || !kbOn_) break;
+        if (attempt > 0 || !kbOn_ || R.queue.front().tag == Tag::kEvade) break;   // a way out waits for the cell: no rule
         KbSituation s;
         s.event = robotsOk ? KbEvent::kObstacleAhead : KbEvent::kRobotAhead;
         s.blockedSteps = R.blocked;
@@ -741,11 +803,8 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         repair(i);
       }
       if (to == R.cell && moving_ && !stayClear(i, R.cell, t, horizon_)) {   // reflex: an obstacle is coming
-        const long w = flee(i, t);
-        if (w != R.cell) {
-          R.queue.push_front({R.cell, R.mode == Mode::kTravel ? Tag::kTravel : Tag::kAside});
-          to = w;
-        }
+        const long w = evade(i, t);
+        if (w != R.cell) to = w;
       }
       next_[i] = to;
       // progress is a move along the plan: waiting and ways round count as blocked steps, so that a

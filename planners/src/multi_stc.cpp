@@ -58,6 +58,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <numeric>
 #include <queue>
@@ -122,6 +123,199 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
   long worst = 0;
   for (std::size_t j = 0; j < k; ++j) worst = std::max(worst, b[j] + f[j] + std::min(b[j], f[j]));
   return worst;
+}
+
+/// DARP-style regions (in the spirit of A. Kapoutsis, S. Chatzichristofis and E. Kosmatopoulos,
+/// "DARP: divide areas algorithm for optimal multi-robot coverage path planning", J. Intell. Robot.
+/// Syst. 86, 2017): the component's free mega-cells split into k connected regions, region i holding
+/// robot i's start mega-cell, as equal in size as moves of single mega-cells can make them. Robot i
+/// then goes round an STC tree of its own region: no travel, and no cell another robot ever enters.
+///
+/// Decision: DARP balances by re-weighting distances until its assignment settles; we start from the
+/// breadth-first (Voronoi) assignment and move boundary mega-cells instead, which is deterministic
+/// and needs no convergence test. While the largest region has a chain of neighbouring regions,
+/// each able to pass one mega-cell to the next, that ends in a region at least two smaller, one
+/// mega-cell moves along each link of the chain (the largest loses one, the last gains one, the
+/// others keep their size): the sum of squared sizes falls with every chain, so it ends. A mega-cell
+/// may leave its region when its region's 4-neighbours around it are connected within its 3 × 3
+/// block (a local test, sufficient for the region to stay connected; in regions of at most 64
+/// mega-cells, where one mega-cell is much of the balance, the whole region is searched instead
+/// when the local test fails) and it is not the start.
+/// Returns the owner of each node (-1 outside the regions), or empty when two robots start in one
+/// mega-cell or the time limit ends the balancing.
+std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<int>& root, const TerminationCondition& stop) {
+  const std::size_t k = root.size(), n = g.size();
+  std::vector<int> owner(n, -1);
+  std::vector<long> size(k, 0);
+  std::deque<int> open;
+  for (std::size_t i = 0; i < k; ++i) {
+    if (owner[static_cast<std::size_t>(root[i])] >= 0) return {};
+    owner[static_cast<std::size_t>(root[i])] = static_cast<int>(i);
+    size[i] = 1;
+    open.push_back(root[i]);
+  }
+  while (!open.empty()) {   // breadth first from all starts at once
+    const int v = open.front();
+    open.pop_front();
+    for (int d = 0; d < 4; ++d) {
+      const int u = g.neighbour(v, d);
+      if (u < 0 || owner[static_cast<std::size_t>(u)] >= 0) continue;
+      owner[static_cast<std::size_t>(u)] = owner[static_cast<std::size_t>(v)];
+      ++size[static_cast<std::size_t>(owner[static_cast<std::size_t>(v)])];
+      open.push_back(u);
+    }
+  }
+  std::vector<char> isRoot(n, 0);
+  for (int r : root) isRoot[static_cast<std::size_t>(r)] = 1;
+  std::vector<unsigned> mark(n, 0);
+  unsigned stamp = 0;
+  // v may leave its region: not a start, and its region's neighbours of v connected around v (or,
+  // in a region of at most 64 mega-cells, the region connected without v)
+  auto mayLeave = [&](int v) {
+    if (isRoot[static_cast<std::size_t>(v)]) return false;
+    const int R = owner[static_cast<std::size_t>(v)], vc = g.col(v), vr = g.row(v);
+    auto inBlock = [&](int u) { return u >= 0 && u != v && owner[static_cast<std::size_t>(u)] == R && std::abs(g.col(u) - vc) <= 1 && std::abs(g.row(u) - vr) <= 1; };
+    int want = 0, seed = -1;
+    for (int d = 0; d < 4; ++d)
+      if (const int u = g.neighbour(v, d); u >= 0 && owner[static_cast<std::size_t>(u)] == R) {
+        ++want;
+        seed = u;
+      }
+    if (want <= 1) return true;
+    int stack[9], top = 0, seen[9], nSeen = 0, reached = 0;
+    stack[top++] = seed;
+    seen[nSeen++] = seed;
+    while (top > 0) {
+      const int w = stack[--top];
+      for (int d = 0; d < 4; ++d)
+        if (g.neighbour(v, d) == w) ++reached;
+      for (int d = 0; d < 4; ++d) {
+        const int u = g.neighbour(w, d);
+        if (!inBlock(u) || std::find(seen, seen + nSeen, u) != seen + nSeen) continue;
+        seen[nSeen++] = u;
+        stack[top++] = u;
+      }
+    }
+    if (reached == want) return true;
+    if (size[static_cast<std::size_t>(R)] > 64) return false;
+    // small regions (where a single mega-cell is much of the balance): the whole region's test
+    ++stamp;
+    std::vector<int> todo{seed};
+    mark[static_cast<std::size_t>(seed)] = stamp;
+    long count = 1;
+    while (!todo.empty()) {
+      const int w = todo.back();
+      todo.pop_back();
+      for (int d = 0; d < 4; ++d) {
+        const int u = g.neighbour(w, d);
+        if (u < 0 || u == v || owner[static_cast<std::size_t>(u)] != R || mark[static_cast<std::size_t>(u)] == stamp) continue;
+        mark[static_cast<std::size_t>(u)] = stamp;
+        ++count;
+        todo.push_back(u);
+      }
+    }
+    return count == size[static_cast<std::size_t>(R)] - 1;
+  };
+  auto touches = [&](int v, int region) {
+    for (int d = 0; d < 4; ++d)
+      if (const int u = g.neighbour(v, d); u >= 0 && owner[static_cast<std::size_t>(u)] == region) return true;
+    return false;
+  };
+  std::vector<std::vector<int>> cellsOf(k);   // each region's mega-cells, in node order at first
+  for (std::size_t v = 0; v < n; ++v)
+    if (owner[v] >= 0) cellsOf[static_cast<std::size_t>(owner[v])].push_back(static_cast<int>(v));
+  // link[R·k + S]: a mega-cell region R may pass to region S, or -1; rows are recomputed only for
+  // regions that a move could have changed (those owning the moved cell's 3 × 3 block)
+  std::vector<int> link(k * k, -1);
+  std::vector<char> stale(k, 1);
+  auto refresh = [&](std::size_t R) {
+    std::fill(link.begin() + static_cast<long>(R * k), link.begin() + static_cast<long>((R + 1) * k), -1);
+    for (int v : cellsOf[R]) {
+      bool checked = false, ok = false;
+      for (int d = 0; d < 4; ++d) {
+        const int u = g.neighbour(v, d);
+        const int S = u < 0 ? -1 : owner[static_cast<std::size_t>(u)];
+        if (S < 0 || S == static_cast<int>(R) || link[R * k + static_cast<std::size_t>(S)] >= 0) continue;
+        if (!checked) {
+          ok = mayLeave(v);
+          checked = true;
+        }
+        if (ok) link[R * k + static_cast<std::size_t>(S)] = v;
+      }
+    }
+    stale[R] = 0;
+  };
+  auto move = [&](int v, int S) {
+    const int R = owner[static_cast<std::size_t>(v)];
+    std::vector<int>& mine = cellsOf[static_cast<std::size_t>(R)];
+    mine.erase(std::find(mine.begin(), mine.end(), v));
+    cellsOf[static_cast<std::size_t>(S)].push_back(v);
+    owner[static_cast<std::size_t>(v)] = S;
+    --size[static_cast<std::size_t>(R)];
+    ++size[static_cast<std::size_t>(S)];
+    const int vc = g.col(v), vr = g.row(v);
+    for (int dr = -1; dr <= 1; ++dr)
+      for (int dc = -1; dc <= 1; ++dc)
+        if (vc + dc >= 0 && vr + dr >= 0 && vc + dc < g.cols && vr + dr < g.rows)
+          if (const int o = owner[static_cast<std::size_t>(g.id(vc + dc, vr + dr))]; o >= 0) stale[static_cast<std::size_t>(o)] = 1;
+  };
+  // a mega-cell of region `from` that may leave it for a neighbouring `to`, or -1
+  auto witness = [&](int from, int to) {
+    for (int v : cellsOf[static_cast<std::size_t>(from)])
+      if (touches(v, to) && mayLeave(v)) return v;
+    return -1;
+  };
+  auto squares = [&]() {
+    long s = 0;
+    for (long z : size) s += z * z;
+    return s;
+  };
+  long before = squares();
+  int still = 0;   // chains cut short may leave the sizes as they were: a few such rounds end it
+  for (std::size_t round = 0; round < 4 * n + 16 && still < 8; ++round) {
+    if ((round & 15) == 15 && stop.expired()) return {};
+    // the largest region with a chain to one at least two smaller (the shortest such chain); where
+    // the largest has none, the next largest (the sum of squares falls all the same)
+    std::vector<std::size_t> bySize(k);
+    std::iota(bySize.begin(), bySize.end(), 0);
+    std::stable_sort(bySize.begin(), bySize.end(), [&](std::size_t a, std::size_t b) { return size[a] > size[b]; });
+    std::size_t A = 0;
+    std::vector<int> from(k);
+    int B = -1;
+    for (std::size_t c = 0; c < k && B < 0; ++c) {
+      A = bySize[c];
+      std::fill(from.begin(), from.end(), -1);
+      from[A] = static_cast<int>(A);
+      std::deque<std::size_t> q{A};
+      while (!q.empty() && B < 0) {
+        const std::size_t R = q.front();
+        q.pop_front();
+        if (stale[R]) refresh(R);
+        for (std::size_t S = 0; S < k; ++S) {
+          if (link[R * k + S] < 0 || from[S] >= 0) continue;
+          from[S] = static_cast<int>(R);
+          if (size[S] + 2 <= size[A]) {
+            B = static_cast<int>(S);
+            break;
+          }
+          q.push_back(S);
+        }
+      }
+    }
+    if (B < 0) break;
+    // pass along the chain from its end, so that each region gives before it receives
+    for (int S = B; S != static_cast<int>(A); S = from[static_cast<std::size_t>(S)]) {
+      const int R = from[static_cast<std::size_t>(S)];
+      int v = link[static_cast<std::size_t>(R) * k + static_cast<std::size_t>(S)];
+      if (owner[static_cast<std::size_t>(v)] != R || !touches(v, S) || !mayLeave(v)) v = witness(R, S);
+      if (v < 0) break;   // the link is gone (its cell was the one passed on): the chain ends here
+      move(v, S);
+    }
+    const long after = squares();
+    still = after < before ? 0 : still + 1;
+    before = after;
+  }
+  return owner;
 }
 
 /// Pieces of the tour reached by travel (in the spirit of MSTC*): the robots, in their order on the
@@ -364,15 +558,18 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
 
 std::string MultiStcBalancedPlanner::description() const {
   return "balanced multi-robot STC (baseline, offline): one STC tour cut into balanced pieces the robots reach by conflict-free "
-         "travel, or into a stretch around each robot's start where that is not sooner; timed in steps, clear of each other and of "
-         "moving obstacles (--scenario)";
+         "travel, or into a stretch around each robot's start where that is not sooner, or (static worlds) balanced connected regions "
+         "with a tour each where that is sooner still; timed in steps, clear of each other and of moving obstacles (--scenario)";
 }
 
 std::vector<ParamSpec> MultiStcBalancedPlanner::params() const {
   return {{"tree", ParamType::kChoice, "dfs_ccw", "dfs_ccw|bfs|kruskal_straight", "the shared tour's spanning tree (as stc's)"},
           {"step", ParamType::kDouble, "0.1", "0.001:1000", "seconds per step (one move between neighbouring sub-cells, or a wait)"},
           {"travel", ParamType::kChoice, "auto", "auto|off",
-           "auto: equal pieces of the tour reached by conflict-free travel where that finishes sooner than the stretches; off: the stretches only"}};
+           "auto: equal pieces of the tour reached by conflict-free travel where that finishes sooner than the stretches; off: the stretches only"},
+          {"regions", ParamType::kChoice, "auto", "auto|off",
+           "auto (static worlds): connected regions of balanced size around the starts, one STC tour each, where that finishes sooner "
+           "than the split above; off: never"}};
 }
 
 Capabilities MultiStcBalancedPlanner::capabilities() const {
@@ -484,10 +681,34 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
       }
     }
   }
+  // connected regions of balanced size, one tour each, when that finishes sooner still
+  if (!moving && k > 1 && params.text("regions") == "auto") {
+    std::vector<int> root(k);
+    for (std::size_t i = 0; i < k; ++i) root[i] = g.id(startCell[i].col / 2, startCell[i].row / 2);
+    const std::vector<int> owner = balancedRegions(g, root, stop);
+    std::vector<std::vector<CellIndex>> own(k);
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < k && !owner.empty(); ++i) {
+      graph::GridGraph mine = g;
+      for (std::size_t v = 0; v < mine.size(); ++v) mine.active[v] = mine.active[v] && owner[v] == static_cast<int>(i);
+      std::vector<CellIndex> tour = stc.tourFrom(ctx, mine, startCell[i], stcParams);
+      if (tour.size() > 1) tour.pop_back();   // closed: the last is the first
+      if (tour.empty()) tour = {startCell[i]};
+      worst = std::max(worst, tour.size());
+      own[i] = std::move(tour);
+    }
+    std::size_t current = 0;
+    for (const auto& r : route) current = std::max(current, r.size());
+    if (!owner.empty() && worst < current) {
+      route.swap(own);
+      split = "regions";
+    }
+  }
   plan.timings.emplace_back("split", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   writeTimedPaths(problem, timing, route, plan);
   plan.statistics["tour_subcells"] = static_cast<double>(L);
   plan.statistics["travelled"] = split == "travel" ? 1 : 0;
+  plan.statistics["regions"] = split == "regions" ? 1 : 0;
   plan.statistics["subcells_skipped"] = static_cast<double>(skipped);
   plan.status = skipped ? PlanStatus::kPartialCoverage : PlanStatus::kExactSolution;
   plan.message = skipped ? "left out " + std::to_string(skipped) + " sub-cells of the tour that no way could reach past the moving obstacles"

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace coverkit;
@@ -145,18 +146,67 @@ TEST(MultiStc, BadTeamsAreRejected) {
   EXPECT_TRUE(planIsValid(wider, planners::runPlanner("multi_stc_balanced", wider, {}, 0)));
 }
 
-// With travel (the default), an obstacle-free map is split evenly: the makespan within 1.15 × the
-// ideal (free sub-cells / k) steps for 2 to 16 robots placed farthest apart, every plan valid; with
-// travel=off the stretches alone (each robot covering only next to its start) are slower.
+// The regions split (the default on static worlds): each robot's sub-cells are its own, connected
+// round its start, their union the whole tour, and the makespan within 1.15 × the ideal (free
+// sub-cells / k) steps on obstacle-free maps, for 2 to 24 robots placed farthest apart (2 to 12 on
+// the 24 × 24 map); on the cluttered grid maps it is no later than the travel split.
+TEST(MultiStc, RegionsBalanceAnOpenMap) {
+  for (int side : {24, 50}) {
+    const Workspace w = boxWith({}, side, side);
+    const double cells = static_cast<double>(side) * side;
+    for (std::size_t k : {2u, 3u, 4u, 8u, 12u, 16u, 24u}) {
+      if (side == 24 && k > 12) continue;   // 9 and 6 mega-cells each: see docs/multi-robot.md
+      SCOPED_TRACE("side " + std::to_string(side) + " k = " + std::to_string(k));
+      const planners::PlanningContext ctx = team(w, Rational(1, 2), k);
+      const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+      ASSERT_TRUE(planIsValid(ctx, plan));
+      EXPECT_EQ(plan.statistics.at("regions"), 1);
+      EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * cells / static_cast<double>(k));
+      // disjoint: no sub-cell entered by two robots; together every one
+      std::vector<int> by(static_cast<std::size_t>(ctx.cells.subCols() * ctx.cells.subRows()), -1);
+      for (std::size_t i = 0; i < k; ++i) {
+        Plan one;
+        one.paths = {plan.paths[i]};
+        const std::vector<char> mine = enteredSubcells(ctx.cells, one);
+        for (std::size_t c = 0; c < mine.size(); ++c)
+          if (mine[c]) {
+            EXPECT_EQ(by[c], -1) << "sub-cell " << c << " entered by robots " << by[c] << " and " << i;
+            by[c] = static_cast<int>(i);
+          }
+      }
+      EXPECT_EQ(static_cast<double>(std::count_if(by.begin(), by.end(), [](int o) { return o >= 0; })), cells);
+    }
+  }
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+    datasets::GridMapSpec spec;
+    spec.width = spec.height = 32;
+    spec.density = 0.05 * static_cast<double>(seed);
+    spec.clustered = true;
+    spec.seed = seed;
+    const Workspace w = datasets::gridToWorkspace(datasets::generateGridMap(spec), "pixels");
+    for (std::size_t k : {2u, 5u, 8u}) {
+      const planners::PlanningContext ctx = team(w, Rational(1, 2), k);
+      const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+      const Plan travel = planners::runPlanner("multi_stc_balanced", ctx, {{"regions", "off"}}, 0);
+      ASSERT_TRUE(planIsValid(ctx, plan)) << "seed " << seed << " k = " << k;
+      EXPECT_LE(plan.statistics.at("makespan_steps"), travel.statistics.at("makespan_steps")) << "seed " << seed << " k = " << k;
+    }
+  }
+}
+
+// With travel (the default when regions are off), an obstacle-free map is split evenly: the
+// makespan within 1.15 × the ideal (free sub-cells / k) steps for 2 to 16 robots placed farthest
+// apart, every plan valid; with travel=off the stretches alone (each robot covering only next to its
+// start) are slower.
 TEST(MultiStc, TravelBalancesAnOpenMap) {
   const Workspace w = boxWith({}, 50, 50);
   for (std::size_t k : {2u, 4u, 8u, 16u}) {
     const planners::PlanningContext ctx = team(w, Rational(1, 2), k);
-    const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+    const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {{"regions", "off"}}, 0);
     ASSERT_TRUE(planIsValid(ctx, plan)) << "k = " << k;
     EXPECT_EQ(plan.statistics.at("travelled"), 1) << "k = " << k;
     EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * 2500.0 / static_cast<double>(k)) << "k = " << k;
-    const Plan stay = planners::runPlanner("multi_stc_balanced", ctx, {{"travel", "off"}}, 0);
+    const Plan stay = planners::runPlanner("multi_stc_balanced", ctx, {{"travel", "off"}, {"regions", "off"}}, 0);
     ASSERT_TRUE(planIsValid(ctx, stay)) << "k = " << k;
     EXPECT_EQ(stay.statistics.at("travelled"), 0);
     EXPECT_GE(stay.statistics.at("makespan_steps"), plan.statistics.at("makespan_steps"));
