@@ -48,9 +48,15 @@
 //  * kb=off is the paper's baseline: a blocked robot waits until the cell clears. Two robots that
 //    wait for each other then wait for ever: the run stops when no robot has moved for 200 steps
 //    after the last obstacle has stopped (status partial_coverage, the deadlock named).
-//  * Built-in reflexes, not rules: a robot whose own place is not clear of a moving obstacle over the
-//    next step moves to the first neighbour that is (a wait would be a collision); a robot with
-//    nothing to do that stands in another's way steps aside.
+//  * Built-in reflexes, not rules (a wait would be a collision): a robot whose own place is not clear
+//    of a moving obstacle over the sensor's horizon leaves at once for the earliest haven (a cell
+//    that then stays clear to the horizon's end), found in space and time; waiting until the last
+//    step that is still clear (the first version) let obstacles corner robots that had ways out
+//    when they first saw them. Where the only ways to a haven pass robots, the idle one in the way
+//    makes room. A robot with nothing to do that stands in another's way steps aside, and while
+//    obstacles move an idle robot waits in a cell with four free neighbours, not in a dead end.
+//    None of this can see past the horizon: an obstacle that comes, through a wall, into a dead end
+//    holding a robot, slower than the horizon shows it, can still catch the robot (team-check).
 //  * What cannot be reached: a target given up three times (an obstacle parked on it) is left;
 //    free sub-cells sensed but never entered are counted (statistic subcells_skipped, status
 //    partial_coverage).
@@ -112,8 +118,10 @@ struct RobotState {
   std::map<long, long> deferredUntil;
   std::map<long, int> gaveUp;
   int nudgedBy = -1;              ///< a robot this idle one stands in the way of
+  int makeRoomFor = -1;           ///< a robot evading an obstacle whose way out this one stands on
   long lastChecked = -1;          ///< knowledge version of its last target search (idle robots)
   long retryAt = -1;              ///< among moving obstacles: when an idle robot looks for a target again
+  bool parked = false;            ///< among moving obstacles: an idle robot has gone to a cell with ways out
   std::size_t cellsEntered = 0;
 };
 
@@ -179,6 +187,7 @@ private:
   void repair(std::size_t i);
   void startTree(std::size_t i);
   void clearTheWay(std::size_t i, std::size_t other, long t);
+  void park(std::size_t i, long t);
 
   const PlanningContext& ctx_;
   const CellGrid& cells_;   // sizes and coordinates only: what is free comes from the sensor
@@ -421,11 +430,29 @@ bool Team::findTarget(std::size_t i, long t) {
   const std::vector<long> way = breadthFirst(R.cell, [&](long w) { return !heldByObstacle(i, w, t); }, wanted, 0, static_cast<std::size_t>(-1));
   if (way.empty()) return false;
   R.target = way.back();
+  R.parked = false;
   targetOf_[R.target] = i;
   R.queue.clear();
   for (long v : way) R.queue.push_back({v, Tag::kTravel});
   R.mode = Mode::kTravel;
   return true;
+}
+
+// Among moving obstacles an idle robot does not wait in a dead end or a corner, where an obstacle
+// coming in would leave it no way out: it goes to the nearest sensed free cell within the sensor's
+// reach whose four neighbours are sensed free and that no robot holds (or stays, where there is none).
+void Team::park(std::size_t i, long t) {
+  RobotState& R = robots_[i];
+  R.parked = true;
+  auto open = [&](long v) {
+    for (int d = 0; d < 4; ++d)
+      if (!knownFree(step(v, d))) return false;
+    return true;
+  };
+  if (open(R.cell)) return;
+  const std::vector<long> way = breadthFirst(
+      R.cell, [&](long w) { return !heldByObstacle(i, w, t); }, [&](long v) { return open(v) && blockerOf(i, v) < 0; }, horizon_ - 1, 4096);
+  for (long v : way) R.queue.push_back({v, Tag::kAside});
 }
 
 void Team::release(std::size_t i) {
@@ -545,8 +572,9 @@ void Team::repair(std::size_t i) {
   R.lastChecked = -1;
 }
 
-// An idle robot stands in the way of `other`: it goes to the nearest sensed free cell that is not on
-// other's way (its queue) and that no robot holds, by a shortest way that does not pass other.
+// A robot stands in the way of `other` (idle, or on the way out of a robot evading an obstacle): it
+// goes to the nearest sensed free cell that is not on other's way (its queue) and that no robot
+// holds, by a shortest way that does not pass other; a robot with work goes on afterwards.
 void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
   RobotState& R = robots_[i];
   const RobotState& O = robots_[other];
@@ -559,7 +587,11 @@ void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
   const std::vector<long> way = breadthFirst(
       R.cell, [&](long w) { return w != O.cell && open(w); },
       [&](long v) { return !inWay(v) && blockerOf(i, v) < 0 && (!moving_ || stayClear(i, v, t, horizon_)); }, 0, 4096);
-  for (long v : way) R.queue.push_back({v, Tag::kAside});
+  if (R.queue.empty()) {
+    for (long v : way) R.queue.push_back({v, Tag::kAside});
+  } else {   // a robot with work of its own: aside first, then on (repair leads it back)
+    for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], Tag::kAside});
+  }
 }
 
 // To a free neighbour that no robot is in or enters, not `avoid` and not where the blocking robot
@@ -595,7 +627,8 @@ bool Team::safeMove(std::size_t i, long from, long to, long t) {
 // The robot's place is about to be reached by an obstacle. Its way out, found breadth first in space
 // and time over sensed free sub-cells, each move clear of the obstacles: to the earliest haven, a
 // cell that then stays clear to the end of the sensor's horizon (the robot leaves at once rather
-// than at the last moment, which keeps the most ways open). The way's cells at steps t + 1, t + 2, …
+// than at the last moment, which keeps the most ways open); among the havens of the first three
+// depths that have one, the one with the most neighbours that are havens too (not a dead end). The way's cells at steps t + 1, t + 2, …
 // (a wait repeats a cell); `haven` says whether it ends in one, else it is the way that stays clear
 // longest. The first move keeps the step rules for robots, and the way keeps off the cells robots
 // hold or enter now, unless `throughRobots`: then those count as free (the way out of a robot boxed
@@ -621,14 +654,29 @@ std::vector<long> Team::fleeWay(std::size_t i, long t, bool throughRobots, bool&
   };
   std::deque<std::pair<long, int>> open{{from, 0}};
   std::pair<long, int> deepest{from, 0};
+  // ways out of a haven: its sensed free neighbours that are havens too (a corner or a dead end
+  // has few; an obstacle coming on after the horizon would trap a robot there)
+  auto exits = [&](long v, int j) {
+    int n = 0;
+    for (int d = 0; d < 4; ++d)
+      if (const long u = step(v, d); knownFree(u) && (throughRobots || blockerOf(i, u) < 0) && havenAt(u, std::min(j + 1, horizon_))) ++n;
+    return n;
+  };
   haven = false;
+  std::pair<long, int> best{-1, 0};
+  int bestExits = -1, firstHaven = -1;
   while (!open.empty()) {
     const auto [v, j] = open.front();
     open.pop_front();
+    if (firstHaven >= 0 && j > firstHaven + 2) break;
     if (j > deepest.second) deepest = {v, j};
-    if (j > 0 && havenAt(v, j)) {
-      haven = true;
-      return wayTo({v, j});
+    if (j > 0 && havenAt(v, j)) {   // the havens of the first three depths that have one: the most exits, then the earliest
+      if (firstHaven < 0) firstHaven = j;
+      if (const int e = exits(v, j); e > bestExits) {
+        bestExits = e;
+        best = {v, j};
+      }
+      if (bestExits == 4) break;
     }
     if (j == horizon_) continue;
     for (int d = -1; d < 4; ++d) {
@@ -640,6 +688,10 @@ std::vector<long> Team::fleeWay(std::size_t i, long t, bool throughRobots, bool&
       parent[{w, j + 1}] = v;
       open.push_back({w, j + 1});
     }
+  }
+  if (best.first >= 0) {
+    haven = true;
+    return wayTo(best);
   }
   return wayTo(deepest);
 }
@@ -664,7 +716,7 @@ long Team::evade(std::size_t i, long t) {
         if (j != i && robots_[j].cell == out[h]) b = static_cast<int>(j);
     if (b >= 0) {
       RobotState& B = robots_[static_cast<std::size_t>(b)];
-      if (B.mode == Mode::kIdle && B.queue.empty()) B.nudgedBy = static_cast<int>(i);
+      B.makeRoomFor = static_cast<int>(i);   // whatever it does: an obstacle is coming
       out.erase(std::unique(out.begin(), out.end()), out.end());
       if (!out.empty() && out.front() == R.cell) out.erase(out.begin());
       if (R.queue.empty() || R.queue.front().cell != R.cell) R.queue.push_front({R.cell, back});
@@ -757,7 +809,10 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           if (!findTarget(i, t) && moving_ && static_cast<double>(t - 2 * horizon_) * timing_.step <= lastObstacle) R.retryAt = t + horizon_;
         }
       }
-      if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t);
+      if (R.mode == Mode::kIdle && R.queue.empty() && moving_ && !R.parked && static_cast<double>(t) * timing_.step <= lastObstacle) park(i, t);
+      if (R.makeRoomFor >= 0) clearTheWay(i, static_cast<std::size_t>(R.makeRoomFor), t);
+      else if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t);
+      R.makeRoomFor = -1;
       R.nudgedBy = -1;
       if (!R.queue.empty() || R.mode != Mode::kIdle || R.retryAt >= 0) anyWork = true;
       // the move
