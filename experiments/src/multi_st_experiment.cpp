@@ -33,6 +33,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <map>
 #include <random>
@@ -76,7 +77,9 @@ MetricOptions teamMetrics() {
 }
 
 /// Free sub-cells reachable from the starts that no robot entered; sub-cells whose centre stays
-/// within r + ρ of an obstacle's last place (blocked for good) are neither reachable nor crossed.
+/// within r + ρ of an obstacle's last place (blocked for good) are neither reachable nor crossed,
+/// and a move between neighbouring centres that passes within r + ρ of one is no way either (two
+/// clear centres beside a parked obstacle can have a blocked move between them).
 std::size_t missedSubcells(const planners::PlanningContext& ctx, const Plan& plan) {
   const CellGrid& c = ctx.cells;
   const int cols = c.subCols(), rows = c.subRows();
@@ -102,6 +105,16 @@ std::size_t missedSubcells(const planners::PlanningContext& ctx, const Plan& pla
     mark(path.start);
     for (const TimedPoint& e : path.timeline) mark(e.p);
   }
+  auto moveClear = [&](int x0, int y0, int x1, int y1) {
+    const PointD a = c.subCenterD(x0, y0), b = c.subCenterD(x1, y1);
+    for (const MovingObstacle& m : ctx.problem.movingObstacles) {
+      const PointD q = m.waypoints.back().p;
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      const double u = std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      if (std::hypot(a.x + u * dx - q.x, a.y + u * dy - q.y) < r + m.radius.get_d()) return false;
+    }
+    return true;
+  };
   std::deque<CellIndex> open;
   for (const Robot& robot : ctx.problem.robots) {
     CellIndex s;
@@ -117,7 +130,7 @@ std::size_t missedSubcells(const planners::PlanningContext& ctx, const Plan& pla
     missed += usable[idx(v.col, v.row)] && !entered[idx(v.col, v.row)] ? 1 : 0;
     for (int d = 0; d < 4; ++d) {
       const int x = v.col + (d == 0) - (d == 2), y = v.row + (d == 1) - (d == 3);
-      if (x < 0 || y < 0 || x >= cols || y >= rows || !usable[idx(x, y)] || seen[idx(x, y)]) continue;
+      if (x < 0 || y < 0 || x >= cols || y >= rows || !usable[idx(x, y)] || seen[idx(x, y)] || !moveClear(v.col, v.row, x, y)) continue;
       seen[idx(x, y)] = 1;
       open.push_back({x, y});
     }

@@ -574,7 +574,9 @@ void Team::repair(std::size_t i) {
 
 // A robot stands in the way of `other` (idle, or on the way out of a robot evading an obstacle): it
 // goes to the nearest sensed free cell that is not on other's way (its queue) and that no robot
-// holds, by a shortest way that does not pass other; a robot with work goes on afterwards.
+// holds, by a shortest way that does not pass other; a robot with work goes on afterwards. An idle
+// robot with no room to make (a dead end behind it) takes over the other's target when it can
+// reach it without passing the other.
 void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
   RobotState& R = robots_[i];
   const RobotState& O = robots_[other];
@@ -587,9 +589,23 @@ void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
   const std::vector<long> way = breadthFirst(
       R.cell, [&](long w) { return w != O.cell && open(w); },
       [&](long v) { return !inWay(v) && blockerOf(i, v) < 0 && (!moving_ || stayClear(i, v, t, horizon_)); }, 0, 4096);
+  if (way.empty() && R.mode == Mode::kIdle && R.queue.empty() && O.mode == Mode::kTravel && O.target >= 0) {
+    // no room to make (a dead end behind it): it takes over the other's target, which lies that way
+    const long target = O.target;
+    const std::vector<long> there = breadthFirst(R.cell, [&](long w) { return w != O.cell && open(w); }, [&](long v) { return v == target; }, 0, 4096);
+    if (!there.empty()) {
+      becomeIdle(other);
+      R.target = target;
+      targetOf_[target] = i;
+      R.mode = Mode::kTravel;
+      R.parked = false;
+      for (long v : there) R.queue.push_back({v, Tag::kTravel});
+      return;
+    }
+  }
   if (R.queue.empty()) {
     for (long v : way) R.queue.push_back({v, Tag::kAside});
-  } else {   // a robot with work of its own: aside first, then on (repair leads it back)
+  } else if (R.queue.front().tag != Tag::kAside) {   // a robot with work of its own: aside first, then on (repair leads it back)
     for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], Tag::kAside});
   }
 }
@@ -782,6 +798,11 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       RobotState& R = robots_[i];
       // what to do next
       if (R.mode == Mode::kTravel && R.target >= 0 && entered_[static_cast<std::size_t>(R.target)] >= 0) becomeIdle(i);   // entered by another
+      // once every obstacle has stopped, a target one of them holds is held for good: given up
+      if (R.mode == Mode::kTravel && R.target >= 0 && static_cast<double>(t) * timing_.step > lastObstacle && heldByObstacle(i, R.target, t)) {
+        R.gaveUp[R.target] = kGiveUpAfter;
+        becomeIdle(i);
+      }
       if (R.queue.empty() && R.mode == Mode::kTree) {
         nextWaypoints(i);
         if (R.queue.empty()) {
@@ -815,7 +836,9 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       R.makeRoomFor = -1;
       R.nudgedBy = -1;
       if (!R.queue.empty() || R.mode != Mode::kIdle || R.retryAt >= 0) anyWork = true;
-      // the move
+      // the move (a way out no longer needed, its place clear again, is dropped)
+      if (!R.queue.empty() && R.queue.front().tag == Tag::kEvade && stayClear(i, R.cell, t, horizon_))
+        while (!R.queue.empty() && R.queue.front().tag == Tag::kEvade) R.queue.pop_front();
       repair(i);
       long to = R.cell;
       bool onPlan = false;   // a move to a waypoint of the plan itself, not of a way round

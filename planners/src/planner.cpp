@@ -181,7 +181,10 @@ void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::
         if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] < dist[static_cast<std::size_t>(best)]) &&
             !nearObstacle(v, r0->radius))
           best = v;
-      if (best >= 0) first = best;   // else checkProblem names the obstacle
+      if (best < 0)
+        throw InputError("--robots", std::to_string(robots.size()),
+                         "no sub-cell of free mega-cells reachable from the default start is clear of the moving obstacles' first places");
+      first = best;
     }
     placed.push_back(first);
     if (r0) r0->start = exactly(waypoint(first));

@@ -447,6 +447,9 @@ expect_bad "scenario: a waypoint of two numbers" "short.yaml: dynamic_obstacles[
 expect_bad "scenario: a misspelt key" "typo.yaml: dynamic_obstacle: unknown key" $(team) --scenario "$T/typo.yaml"
 expect_bad "scenario: missing file" "nothere.yaml" $(team) --scenario "$T/nothere.yaml"
 expect_bad "scenario: an obstacle on a robot" "onrobot.yaml: dynamic_obstacles[0]: starts on robot 0" $(team) --start 1,1 --scenario "$T/onrobot.yaml"
+printf 'format: coverkit.scenario/1\ndynamic_obstacles:\n  - radius: 100\n    waypoints: [[0, 5, 5], [10, 200, 200]]\n' > "$T/everywhere.yaml"
+expect_bad "team: --robots with every place under an obstacle" "--robots: 2: no sub-cell of free mega-cells reachable from the default start is clear of the moving obstacles' first places" \
+  $(team) --robots 2 --scenario "$T/everywhere.yaml"
 "$CK" plan --planner multi_stc_balanced --map "$DATA/maze.map" --radius 0.25 --robots 3 --out "$T/team.json" > /dev/null 2>&1 &&
   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert len(d['robots']) == 3 and all(len(r['timeline']) > 1 for r in d['robots'])" "$T/team.json" &&
   "$CK" evaluate --map "$DATA/maze.map" --path "$T/team.json" > "$T/team.out" 2>&1 && grep -q "valid: yes" "$T/team.out" &&
