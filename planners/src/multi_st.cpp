@@ -184,7 +184,7 @@ private:
   std::vector<long> fleeWay(std::size_t i, long t, bool throughRobots, bool& haven);
   long evade(std::size_t i, long t);
   void release(std::size_t i);
-  void repair(std::size_t i);
+  void repair(std::size_t i, long t);
   void startTree(std::size_t i);
   void clearTheWay(std::size_t i, std::size_t other, long t);
   void park(std::size_t i, long t);
@@ -552,12 +552,12 @@ void Team::startTree(std::size_t i) {
 // The queue's first waypoint must be the robot's cell or next to it (a skip can leave one that is
 // not): the way there is put in front of it, or, where there is none over the sensed cells, it is
 // dropped (on the walk round a tree the walk goes on; travel comes back for what is left).
-void Team::repair(std::size_t i) {
+void Team::repair(std::size_t i, long t) {
   RobotState& R = robots_[i];
   for (int guard = 0; guard < 64; ++guard) {
     if (R.queue.empty() && R.mode == Mode::kTree) nextWaypoints(i);
     if (R.queue.empty() || distance(R.queue.front().cell, R.cell) <= 1) return;
-    const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, -1, 0);
+    const std::vector<long> way = shortestWay(i, R.cell, R.queue.front().cell, -1, 0, t);   // off cells obstacles hold now
     if (!way.empty()) {
       goVia(R, way);
       return;
@@ -839,7 +839,14 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       // the move (a way out no longer needed, its place clear again, is dropped)
       if (!R.queue.empty() && R.queue.front().tag == Tag::kEvade && stayClear(i, R.cell, t, horizon_))
         while (!R.queue.empty() && R.queue.front().tag == Tag::kEvade) R.queue.pop_front();
-      repair(i);
+      // once every obstacle has stopped, a waypoint one of them holds is held for good: passed over
+      for (int guard = 0; guard < 64 && moving_ && static_cast<double>(t) * timing_.step > lastObstacle && !R.queue.empty() &&
+                          heldByObstacle(i, R.queue.front().cell, t);
+           ++guard) {
+        R.queue.pop_front();
+        passOver(i);
+      }
+      repair(i, t);
       long to = R.cell;
       bool onPlan = false;   // a move to a waypoint of the plan itself, not of a way round
       for (int attempt = 0; attempt < 2 && !R.queue.empty(); ++attempt) {
@@ -878,7 +885,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           R.pendingSince = t;
         }
         if (!act(i, kb_.rules[static_cast<std::size_t>(rule)].action, t)) break;
-        repair(i);
+        repair(i, t);
       }
       if (to == R.cell && moving_ && !stayClear(i, R.cell, t, horizon_)) {   // reflex: an obstacle is coming
         const long w = evade(i, t);
