@@ -143,6 +143,9 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
 /// when the local test fails) and it is not the start.
 /// Returns the owner of each node (-1 outside the regions), or empty when two robots start in one
 /// mega-cell or the time limit ends the balancing.
+/// Teams larger than this skip the regions split (its links between regions are a k × k table).
+constexpr std::size_t kMaxRegions = 1024;
+
 std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<int>& root, const TerminationCondition& stop) {
   const std::size_t k = root.size(), n = g.size();
   std::vector<int> owner(n, -1);
@@ -682,7 +685,7 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
     }
   }
   // connected regions of balanced size, one tour each, when that finishes sooner still
-  if (!moving && k > 1 && params.text("regions") == "auto") {
+  if (!moving && k > 1 && k <= kMaxRegions && params.text("regions") == "auto") {
     std::vector<int> root(k);
     for (std::size_t i = 0; i < k; ++i) root[i] = g.id(startCell[i].col / 2, startCell[i].row / 2);
     const std::vector<int> owner = balancedRegions(g, root, stop);
