@@ -1010,7 +1010,10 @@ std::vector<ParamSpec> MultiStPlanner::params() const {
   return {{"kb", ParamType::kPath, "on", "on|off|FILE",
            "the knowledge base: on (the shipped rules, planners/data/multi_st_kb.yaml), off (the paper's baseline: wait until the cell "
            "clears) or a coverkit.kb/1 file"},
-          {"step", ParamType::kDouble, "0.1", "0.001:1000", "seconds per step (one move between neighbouring sub-cells, or a wait)"}};
+          {"step", ParamType::kDouble, "0.1", "0.001:1000", "seconds per step (one move between neighbouring sub-cells, or a wait)"},
+          {"horizon", ParamType::kInt, "20", "2:200",
+           "steps (and sub-cells) over which a robot's sensor predicts the moving obstacles: longer sees an obstacle coming sooner, "
+           "and costs more per step"}};
 }
 
 Capabilities MultiStPlanner::capabilities() const {
@@ -1032,6 +1035,7 @@ Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params
   const std::size_t k = problem.robots.size();
   checkTeamGrid(ctx, "multi_st");
   const std::string kbSpec = params.text("kb");
+  const int horizon = static_cast<int>(params.integer("horizon"));
   const bool kbOn = kbSpec != "off";
   const KnowledgeBase kb = kbOn ? loadKnowledgeBase(kbSpec) : KnowledgeBase{};
   const StepTiming timing = makeStepTiming(ctx, params.number("step"));
@@ -1075,7 +1079,7 @@ Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params
   // without a timeline, sub-cells no double path can cross left out and the team run again).
   if (k == 1 && problem.movingObstacles.empty() && !given && !centresAreDoubles(cells)) {
     const bool unsafe = withoutUnplaceableCells(ctx, starts[0], plan, [&](const PlanningContext& c) -> std::vector<CellIndex> {
-      TeamSensor sensor(c.cells, starts, moveClear);
+      TeamSensor sensor(c.cells, starts, moveClear, horizon);
       Team team(c, timing, kb, kbOn, sensor);
       plan.statistics.clear();
       plan.status = team.run(starts, stop, plan);
@@ -1100,7 +1104,7 @@ Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params
     }
   } else {
     std::unique_ptr<TeamSensor> own;
-    if (!given) own = std::make_unique<TeamSensor>(cells, starts, moveClear);
+    if (!given) own = std::make_unique<TeamSensor>(cells, starts, moveClear, horizon);
     TeamSensor& sensor = given ? *given : *own;
     Team team(ctx, timing, kb, kbOn, sensor);
     plan.status = team.run(starts, stop, plan);

@@ -270,6 +270,11 @@ TEST(MultiSt, PlansAmongMovingObstacles) {
     EXPECT_LE(plan.statistics.at("subcells_skipped"), 8) << plan.message;
     EXPECT_GT(plan.statistics.at("rules_fired"), 0);
     EXPECT_EQ(pathJsonOf(plan), pathJsonOf(planners::runPlanner("multi_st", ctx, {}, 0)));
+    // a longer sensor horizon: valid too, and the sensor is asked about more
+    const Plan far = planners::runPlanner("multi_st", ctx, {{"horizon", "40"}}, 0);
+    const ValidationReport farRep = validatePaths(ctx.problem, far.paths);
+    EXPECT_TRUE(farRep.valid) << (farRep.violations.empty() ? "" : farRep.violations[0].detail);
+    EXPECT_GT(far.statistics.at("sensor_queries"), plan.statistics.at("sensor_queries"));
   }
 }
 
