@@ -137,10 +137,8 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
 /// each able to pass one mega-cell to the next, that ends in a region at least two smaller, one
 /// mega-cell moves along each link of the chain (the largest loses one, the last gains one, the
 /// others keep their size): the sum of squared sizes falls with every chain, so it ends. A mega-cell
-/// may leave its region when its region's 4-neighbours around it are connected within its 3 × 3
-/// block (a local test, sufficient for the region to stay connected; in regions of at most 64
-/// mega-cells, where one mega-cell is much of the balance, the whole region is searched instead
-/// when the local test fails) and it is not the start.
+/// may leave its region when it is not the start and not an articulation point of its region
+/// (Tarjan's depth-first search over the region, redone only for regions a move changed).
 /// Returns the owner of each node (-1 outside the regions), or empty when two robots start in one
 /// mega-cell or the time limit ends the balancing.
 /// Teams larger than this skip the regions split (its links between regions are a k × k table).
@@ -170,55 +168,45 @@ std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<in
   }
   std::vector<char> isRoot(n, 0);
   for (int r : root) isRoot[static_cast<std::size_t>(r)] = 1;
-  std::vector<unsigned> mark(n, 0);
-  unsigned stamp = 0;
-  // v may leave its region: not a start, and its region's neighbours of v connected around v (or,
-  // in a region of at most 64 mega-cells, the region connected without v)
-  auto mayLeave = [&](int v) {
-    if (isRoot[static_cast<std::size_t>(v)]) return false;
-    const int R = owner[static_cast<std::size_t>(v)], vc = g.col(v), vr = g.row(v);
-    auto inBlock = [&](int u) { return u >= 0 && u != v && owner[static_cast<std::size_t>(u)] == R && std::abs(g.col(u) - vc) <= 1 && std::abs(g.row(u) - vr) <= 1; };
-    int want = 0, seed = -1;
-    for (int d = 0; d < 4; ++d)
-      if (const int u = g.neighbour(v, d); u >= 0 && owner[static_cast<std::size_t>(u)] == R) {
-        ++want;
-        seed = u;
-      }
-    if (want <= 1) return true;
-    int stack[9], top = 0, seen[9], nSeen = 0, reached = 0;
-    stack[top++] = seed;
-    seen[nSeen++] = seed;
-    while (top > 0) {
-      const int w = stack[--top];
-      for (int d = 0; d < 4; ++d)
-        if (g.neighbour(v, d) == w) ++reached;
-      for (int d = 0; d < 4; ++d) {
-        const int u = g.neighbour(w, d);
-        if (!inBlock(u) || std::find(seen, seen + nSeen, u) != seen + nSeen) continue;
-        seen[nSeen++] = u;
-        stack[top++] = u;
-      }
+  // cut[v]: v is an articulation point of its region (removing it would split the region), for
+  // regions whose rows are not stale; found by Tarjan's depth-first search (iterative)
+  std::vector<char> cut(n, 0);
+  std::vector<int> disc(n, 0), low(n, 0);
+  int clock = 0;
+  auto articulate = [&](const std::vector<int>& cells, int R) {
+    for (int v : cells) {
+      cut[static_cast<std::size_t>(v)] = 0;
+      disc[static_cast<std::size_t>(v)] = 0;
     }
-    if (reached == want) return true;
-    if (size[static_cast<std::size_t>(R)] > 64) return false;
-    // small regions (where a single mega-cell is much of the balance): the whole region's test
-    ++stamp;
-    std::vector<int> todo{seed};
-    mark[static_cast<std::size_t>(seed)] = stamp;
-    long count = 1;
-    while (!todo.empty()) {
-      const int w = todo.back();
-      todo.pop_back();
-      for (int d = 0; d < 4; ++d) {
-        const int u = g.neighbour(w, d);
-        if (u < 0 || u == v || owner[static_cast<std::size_t>(u)] != R || mark[static_cast<std::size_t>(u)] == stamp) continue;
-        mark[static_cast<std::size_t>(u)] = stamp;
-        ++count;
-        todo.push_back(u);
+    if (cells.empty()) return;
+    struct Frame { int v, parent, d; };
+    std::vector<Frame> stack{{cells.front(), -1, 0}};
+    disc[static_cast<std::size_t>(cells.front())] = low[static_cast<std::size_t>(cells.front())] = ++clock;
+    int rootChildren = 0;
+    while (!stack.empty()) {
+      Frame& f = stack.back();
+      if (f.d < 4) {
+        const int u = g.neighbour(f.v, f.d++);
+        if (u < 0 || owner[static_cast<std::size_t>(u)] != R || u == f.parent) continue;
+        if (disc[static_cast<std::size_t>(u)] == 0) {
+          disc[static_cast<std::size_t>(u)] = low[static_cast<std::size_t>(u)] = ++clock;
+          if (f.parent < 0) ++rootChildren;
+          stack.push_back({u, f.v, 0});
+        } else {
+          low[static_cast<std::size_t>(f.v)] = std::min(low[static_cast<std::size_t>(f.v)], disc[static_cast<std::size_t>(u)]);
+        }
+        continue;
       }
+      const int v = f.v, parent = f.parent;
+      stack.pop_back();
+      if (parent < 0) continue;
+      low[static_cast<std::size_t>(parent)] = std::min(low[static_cast<std::size_t>(parent)], low[static_cast<std::size_t>(v)]);
+      if (stack.back().parent >= 0 && low[static_cast<std::size_t>(v)] >= disc[static_cast<std::size_t>(parent)]) cut[static_cast<std::size_t>(parent)] = 1;
     }
-    return count == size[static_cast<std::size_t>(R)] - 1;
+    if (rootChildren > 1) cut[static_cast<std::size_t>(cells.front())] = 1;
   };
+  // v may leave its region: not a start, and not a cut of its region
+  auto mayLeave = [&](int v) { return !isRoot[static_cast<std::size_t>(v)] && !cut[static_cast<std::size_t>(v)]; };
   auto touches = [&](int v, int region) {
     for (int d = 0; d < 4; ++d)
       if (const int u = g.neighbour(v, d); u >= 0 && owner[static_cast<std::size_t>(u)] == region) return true;
@@ -232,6 +220,7 @@ std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<in
   std::vector<int> link(k * k, -1);
   std::vector<char> stale(k, 1);
   auto refresh = [&](std::size_t R) {
+    articulate(cellsOf[R], static_cast<int>(R));
     std::fill(link.begin() + static_cast<long>(R * k), link.begin() + static_cast<long>((R + 1) * k), -1);
     for (int v : cellsOf[R]) {
       bool checked = false, ok = false;
@@ -256,6 +245,7 @@ std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<in
     owner[static_cast<std::size_t>(v)] = S;
     --size[static_cast<std::size_t>(R)];
     ++size[static_cast<std::size_t>(S)];
+    stale[static_cast<std::size_t>(R)] = stale[static_cast<std::size_t>(S)] = 1;
     const int vc = g.col(v), vr = g.row(v);
     for (int dr = -1; dr <= 1; ++dr)
       for (int dc = -1; dc <= 1; ++dc)
