@@ -831,7 +831,8 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
         }
       }
       if (R.mode == Mode::kIdle && R.queue.empty() && moving_ && !R.parked && static_cast<double>(t) * timing_.step <= lastObstacle) park(i, t);
-      if (R.makeRoomFor >= 0) clearTheWay(i, static_cast<std::size_t>(R.makeRoomFor), t);
+      // (a robot on its own way out keeps to it: making room would pile ways on ways)
+      if (R.makeRoomFor >= 0 && (R.queue.empty() || R.queue.front().tag != Tag::kEvade)) clearTheWay(i, static_cast<std::size_t>(R.makeRoomFor), t);
       else if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t);
       R.makeRoomFor = -1;
       R.nudgedBy = -1;
