@@ -166,6 +166,7 @@ private:
   void nextWaypoints(std::size_t i);
   void pushMoveOn(std::size_t i);
   bool findTarget(std::size_t i, long t);
+  void travelTo(std::size_t i, const std::vector<long>& way);
   bool allowed(std::size_t self, long from, long to) const;
   int blockerOf(std::size_t self, long v) const;
   template <class Pass, class Goal>
@@ -429,13 +430,19 @@ bool Team::findTarget(std::size_t i, long t) {
   // the way keeps off cells a moving obstacle holds now, as far as the sensor reaches
   const std::vector<long> way = breadthFirst(R.cell, [&](long w) { return !heldByObstacle(i, w, t); }, wanted, 0, static_cast<std::size_t>(-1));
   if (way.empty()) return false;
+  travelTo(i, way);
+  return true;
+}
+
+// The robot reserves the way's last cell as its target and travels there by the way.
+void Team::travelTo(std::size_t i, const std::vector<long>& way) {
+  RobotState& R = robots_[i];
   R.target = way.back();
   R.parked = false;
   targetOf_[R.target] = i;
   R.queue.clear();
   for (long v : way) R.queue.push_back({v, Tag::kTravel});
   R.mode = Mode::kTravel;
-  return true;
 }
 
 // Among moving obstacles an idle robot does not wait in a dead end or a corner, where an obstacle
@@ -595,11 +602,7 @@ void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
     const std::vector<long> there = breadthFirst(R.cell, [&](long w) { return w != O.cell && open(w); }, [&](long v) { return v == target; }, 0, 4096);
     if (!there.empty()) {
       becomeIdle(other);
-      R.target = target;
-      targetOf_[target] = i;
-      R.mode = Mode::kTravel;
-      R.parked = false;
-      for (long v : there) R.queue.push_back({v, Tag::kTravel});
+      travelTo(i, there);
       return;
     }
   }
@@ -722,7 +725,9 @@ long Team::evade(std::size_t i, long t) {
   while (!R.queue.empty() && R.queue.front().tag == Tag::kEvade) R.queue.pop_front();   // an earlier way out, replaced
   bool haven = false;
   std::vector<long> way = fleeWay(i, t, false, haven);
-  const Tag back = R.mode == Mode::kTravel ? Tag::kTravel : Tag::kAside;
+  auto comeBack = [&]() {   // back to this cell afterwards (once)
+    if (R.queue.empty() || R.queue.front().cell != R.cell) R.queue.push_front({R.cell, R.mode == Mode::kTravel ? Tag::kTravel : Tag::kAside});
+  };
   if (!haven) {
     bool through = false;
     std::vector<long> out = fleeWay(i, t, true, through);
@@ -735,13 +740,13 @@ long Team::evade(std::size_t i, long t) {
       B.makeRoomFor = static_cast<int>(i);   // whatever it does: an obstacle is coming
       out.erase(std::unique(out.begin(), out.end()), out.end());
       if (!out.empty() && out.front() == R.cell) out.erase(out.begin());
-      if (R.queue.empty() || R.queue.front().cell != R.cell) R.queue.push_front({R.cell, back});
+      comeBack();
       for (std::size_t h = out.size(); h-- > 0;) R.queue.push_front({out[h], Tag::kEvade});
       return R.cell;
     }
   }
   if (way.empty() || way.front() == R.cell) return R.cell;
-  if (R.queue.empty() || R.queue.front().cell != R.cell) R.queue.push_front({R.cell, back});
+  comeBack();
   return way.front();
 }
 
@@ -793,13 +798,14 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       break;
     }
     std::fill(next_.begin(), next_.end(), -1);
+    const bool stopped = static_cast<double>(t) * timing_.step > lastObstacle;   // every obstacle has stopped (or there is none)
     bool anyWork = false, moved = false;
     for (std::size_t i = 0; i < k; ++i) {
       RobotState& R = robots_[i];
       // what to do next
       if (R.mode == Mode::kTravel && R.target >= 0 && entered_[static_cast<std::size_t>(R.target)] >= 0) becomeIdle(i);   // entered by another
       // once every obstacle has stopped, a target one of them holds is held for good: given up
-      if (R.mode == Mode::kTravel && R.target >= 0 && static_cast<double>(t) * timing_.step > lastObstacle && heldByObstacle(i, R.target, t)) {
+      if (R.mode == Mode::kTravel && R.target >= 0 && stopped && heldByObstacle(i, R.target, t)) {
         R.gaveUp[R.target] = kGiveUpAfter;
         becomeIdle(i);
       }
@@ -830,7 +836,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
           if (!findTarget(i, t) && moving_ && static_cast<double>(t - 2 * horizon_) * timing_.step <= lastObstacle) R.retryAt = t + horizon_;
         }
       }
-      if (R.mode == Mode::kIdle && R.queue.empty() && moving_ && !R.parked && static_cast<double>(t) * timing_.step <= lastObstacle) park(i, t);
+      if (R.mode == Mode::kIdle && R.queue.empty() && moving_ && !R.parked && !stopped) park(i, t);
       // (a robot on its own way out keeps to it: making room would pile ways on ways)
       if (R.makeRoomFor >= 0 && (R.queue.empty() || R.queue.front().tag != Tag::kEvade)) clearTheWay(i, static_cast<std::size_t>(R.makeRoomFor), t);
       else if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t);
@@ -841,7 +847,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       if (!R.queue.empty() && R.queue.front().tag == Tag::kEvade && stayClear(i, R.cell, t, horizon_))
         while (!R.queue.empty() && R.queue.front().tag == Tag::kEvade) R.queue.pop_front();
       // once every obstacle has stopped, a waypoint one of them holds is held for good: passed over
-      for (int guard = 0; guard < 64 && moving_ && static_cast<double>(t) * timing_.step > lastObstacle && !R.queue.empty() &&
+      for (int guard = 0; guard < 64 && moving_ && stopped && !R.queue.empty() &&
                           heldByObstacle(i, R.queue.front().cell, t);
            ++guard) {
         R.queue.pop_front();
@@ -925,7 +931,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       R.route.push_back(cellOf(R.cell));
     }
     if (moved) lastMove = t;
-    if (!anyWork && !moved && static_cast<double>(t) * timing_.step > lastObstacle) {
+    if (!anyWork && !moved && stopped) {
       // every robot idle with nothing left that it could reach: done
       // (a target deferred for a while comes back when its deferral ends)
       bool live = false;
@@ -940,12 +946,12 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       enteredBefore = enteredTotal_;
       lastProgress = t;
     }
-    if (t - lastProgress > noProgress && static_cast<double>(t) * timing_.step > lastObstacle) {
+    if (t - lastProgress > noProgress && stopped) {
       status = PlanStatus::kPartialCoverage;
       why = "no robot entered a new sub-cell for " + std::to_string(noProgress) + " steps";
       break;
     }
-    if (t - lastMove > kStallSteps && static_cast<double>(t) * timing_.step > lastObstacle) {
+    if (t - lastMove > kStallSteps && stopped) {
       status = PlanStatus::kPartialCoverage;
       why = kbOn_ ? "no robot could move for " + std::to_string(kStallSteps) + " steps"
                   : "deadlock: the robots wait for each other (kb=off waits until a cell clears; kb=on resolves it)";

@@ -125,6 +125,16 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
   return worst;
 }
 
+/// Teams larger than this skip the regions split (its links between regions are a k × k table).
+constexpr std::size_t kMaxRegions = 1024;
+
+/// The longest of the robots' routes: the makespan in steps of a split.
+std::size_t longest(const std::vector<std::vector<CellIndex>>& routes) {
+  std::size_t n = 0;
+  for (const auto& r : routes) n = std::max(n, r.size());
+  return n;
+}
+
 /// DARP-style regions (in the spirit of A. Kapoutsis, S. Chatzichristofis and E. Kosmatopoulos,
 /// "DARP: divide areas algorithm for optimal multi-robot coverage path planning", J. Intell. Robot.
 /// Syst. 86, 2017): the component's free mega-cells split into k connected regions, region i holding
@@ -141,9 +151,6 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
 /// (Tarjan's depth-first search over the region, redone only for regions a move changed).
 /// Returns the owner of each node (-1 outside the regions), or empty when two robots start in one
 /// mega-cell or the time limit ends the balancing.
-/// Teams larger than this skip the regions split (its links between regions are a k × k table).
-constexpr std::size_t kMaxRegions = 1024;
-
 std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<int>& root, const TerminationCondition& stop) {
   const std::size_t k = root.size(), n = g.size();
   std::vector<int> owner(n, -1);
@@ -215,8 +222,9 @@ std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<in
   std::vector<std::vector<int>> cellsOf(k);   // each region's mega-cells, in node order at first
   for (std::size_t v = 0; v < n; ++v)
     if (owner[v] >= 0) cellsOf[static_cast<std::size_t>(owner[v])].push_back(static_cast<int>(v));
-  // link[R·k + S]: a mega-cell region R may pass to region S, or -1; rows are recomputed only for
-  // regions that a move could have changed (those owning the moved cell's 3 × 3 block)
+  // link[R·k + S]: a mega-cell region R may pass to region S, or -1; a row (and the region's cuts)
+  // is recomputed only when a move could have changed it: the two regions of the move, and those
+  // owning a neighbour of the moved cell (whose cells next to it now touch another region)
   std::vector<int> link(k * k, -1);
   std::vector<char> stale(k, 1);
   auto refresh = [&](std::size_t R) {
@@ -246,11 +254,8 @@ std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<in
     --size[static_cast<std::size_t>(R)];
     ++size[static_cast<std::size_t>(S)];
     stale[static_cast<std::size_t>(R)] = stale[static_cast<std::size_t>(S)] = 1;
-    const int vc = g.col(v), vr = g.row(v);
-    for (int dr = -1; dr <= 1; ++dr)
-      for (int dc = -1; dc <= 1; ++dc)
-        if (vc + dc >= 0 && vr + dr >= 0 && vc + dc < g.cols && vr + dr < g.rows)
-          if (const int o = owner[static_cast<std::size_t>(g.id(vc + dc, vr + dr))]; o >= 0) stale[static_cast<std::size_t>(o)] = 1;
+    for (int d = 0; d < 4; ++d)
+      if (const int u = g.neighbour(v, d); u >= 0 && owner[static_cast<std::size_t>(u)] >= 0) stale[static_cast<std::size_t>(owner[static_cast<std::size_t>(u)])] = 1;
   };
   // a mega-cell of region `from` that may leave it for a neighbouring `to`, or -1
   auto witness = [&](int from, int to) {
@@ -665,10 +670,7 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
     std::vector<std::vector<CellIndex>> travelled;
     std::size_t none = 0;
     if (travelRoutes(cells, walk, L, startCell, order, timing, travelled, none, stop, timedOut)) {
-      std::size_t a1 = 0, b1 = 0;
-      for (const auto& r : travelled) a1 = std::max(a1, r.size());
-      for (const auto& r : route) b1 = std::max(b1, r.size());
-      if (a1 < b1) {
+      if (longest(travelled) < longest(route)) {
         route.swap(travelled);
         split = "travel";
       }
@@ -680,19 +682,23 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
     for (std::size_t i = 0; i < k; ++i) root[i] = g.id(startCell[i].col / 2, startCell[i].row / 2);
     const std::vector<int> owner = balancedRegions(g, root, stop);
     std::vector<std::vector<CellIndex>> own(k);
-    std::size_t worst = 0;
-    for (std::size_t i = 0; i < k && !owner.empty(); ++i) {
+    if (!owner.empty()) {
+      // one graph whose active nodes are, in turn, each region's
+      std::vector<std::vector<int>> members(k);
+      for (std::size_t v = 0; v < owner.size(); ++v)
+        if (owner[v] >= 0) members[static_cast<std::size_t>(owner[v])].push_back(static_cast<int>(v));
       graph::GridGraph mine = g;
-      for (std::size_t v = 0; v < mine.size(); ++v) mine.active[v] = mine.active[v] && owner[v] == static_cast<int>(i);
-      std::vector<CellIndex> tour = stc.tourFrom(ctx, mine, startCell[i], stcParams);
-      if (tour.size() > 1) tour.pop_back();   // closed: the last is the first
-      if (tour.empty()) tour = {startCell[i]};
-      worst = std::max(worst, tour.size());
-      own[i] = std::move(tour);
+      std::fill(mine.active.begin(), mine.active.end(), 0);
+      for (std::size_t i = 0; i < k; ++i) {
+        for (int v : members[i]) mine.active[static_cast<std::size_t>(v)] = 1;
+        std::vector<CellIndex> tour = stc.tourFrom(ctx, mine, startCell[i], stcParams);
+        for (int v : members[i]) mine.active[static_cast<std::size_t>(v)] = 0;
+        if (tour.size() > 1) tour.pop_back();   // closed: the last is the first
+        if (tour.empty()) tour = {startCell[i]};
+        own[i] = std::move(tour);
+      }
     }
-    std::size_t current = 0;
-    for (const auto& r : route) current = std::max(current, r.size());
-    if (!owner.empty() && worst < current) {
+    if (!owner.empty() && longest(own) < longest(route)) {
       route.swap(own);
       split = "regions";
     }

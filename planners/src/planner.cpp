@@ -194,10 +194,9 @@ void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::
     // the farthest reachable sub-cell from those placed, first in row order, not where a moving
     // obstacle starts
     const std::vector<int> dist = graph::gridDistances(cols, rows, placed, [&](int v) { return usable(v % cols, v / cols); });
-    auto nearObstacle1 = [&](long v) { return nearObstacle(v, r.radius); };
     long best = -1;
     for (long v = 0; v < static_cast<long>(dist.size()); ++v)
-      if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] > dist[static_cast<std::size_t>(best)]) && !nearObstacle1(v))
+      if (dist[static_cast<std::size_t>(v)] > 0 && (best < 0 || dist[static_cast<std::size_t>(v)] > dist[static_cast<std::size_t>(best)]) && !nearObstacle(v, r.radius))
         best = v;
     if (best < 0) throw InputError("--robots", std::to_string(robots.size()), "more robots than sub-cells of free mega-cells reachable from the first" +
                                                                   std::string(obstacles.empty() ? "" : " and clear of the moving obstacles' first places"));

@@ -111,8 +111,8 @@ std::optional<Point> defaultStart(const CellGrid& cells);
 PointD stcWaypoint(const CellGrid& cells, int col, int row);
 /// Starts for the robots of a team that have none (deterministic farthest-point placement): the
 /// first at the default start unless some robot has a start (or, where a moving obstacle starts
-/// within reach of it, at the nearest sub-cell clear of them, the first in row order among equals); each next at the centre (as STC places
-/// it) of the sub-cell of a free mega-cell that is farthest, in 4-connected steps over such
+/// within reach of it, at the nearest sub-cell clear of them, the first in row order among equals);
+/// each next at the centre (as STC places it) of the sub-cell of a free mega-cell that is farthest, in 4-connected steps over such
 /// sub-cells, from the starts placed so far (the first in row order among equals). InputError when
 /// the reachable sub-cells run out. Sub-cells within r + ρ of a moving obstacle's first place are
 /// passed over. makeContext calls it for problems of several robots.
