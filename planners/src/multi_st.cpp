@@ -785,6 +785,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
   // crossing of the map to reach the next target)
   const long noProgress = 4L * (cols_ + rows_) + kStallSteps;
   PlanStatus status = PlanStatus::kExactSolution;
+  bool stalled = false;   // stopped because nothing moved or nothing new was entered for long
   std::string why;
   for (;; ++t) {
     if ((t & 63) == 0 && stop.expired()) {
@@ -948,11 +949,13 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     }
     if (t - lastProgress > noProgress && stopped) {
       status = PlanStatus::kPartialCoverage;
+      stalled = true;
       why = "no robot entered a new sub-cell for " + std::to_string(noProgress) + " steps";
       break;
     }
     if (t - lastMove > kStallSteps && stopped) {
       status = PlanStatus::kPartialCoverage;
+      stalled = true;
       why = kbOn_ ? "no robot could move for " + std::to_string(kStallSteps) + " steps"
                   : "deadlock: the robots wait for each other (kb=off waits until a cell clears; kb=on resolves it)";
       break;
@@ -981,6 +984,10 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
   }
   for (std::size_t v = 0; v < known_.size(); ++v) enteredCount += seen[v] && entered_[v] >= 0 ? 1 : 0;
   const std::size_t skipped = sensedFree - enteredCount;
+  if (stalled && skipped == 0) {   // stuck, but with nothing left: every sensed free sub-cell was entered, so every reachable one
+    status = PlanStatus::kExactSolution;
+    why.clear();
+  }
   if (status == PlanStatus::kExactSolution && skipped > 0) {
     status = PlanStatus::kPartialCoverage;
     why = "left " + std::to_string(skipped) + " free sub-cells that no robot could reach" + (moving_ ? " past the moving obstacles" : "");

@@ -268,6 +268,8 @@ TEST(MultiSt, PlansAmongMovingObstacles) {
     const ValidationReport rep = validatePaths(ctx.problem, plan.paths);
     EXPECT_TRUE(rep.valid) << (rep.violations.empty() ? "" : rep.violations[0].detail);
     EXPECT_LE(plan.statistics.at("subcells_skipped"), 8) << plan.message;
+    // the status tells the truth: exact exactly when no reachable sensed sub-cell was left
+    EXPECT_EQ(plan.status == PlanStatus::kExactSolution, plan.statistics.at("subcells_skipped") == 0) << plan.message;
     EXPECT_GT(plan.statistics.at("rules_fired"), 0);
     EXPECT_EQ(pathJsonOf(plan), pathJsonOf(planners::runPlanner("multi_st", ctx, {}, 0)));
     // a longer sensor horizon: valid too, and the sensor is asked about more
