@@ -52,11 +52,20 @@
 //    of a moving obstacle over the sensor's horizon leaves at once for the earliest haven (a cell
 //    that then stays clear to the horizon's end), found in space and time; waiting until the last
 //    step that is still clear (the first version) let obstacles corner robots that had ways out
-//    when they first saw them. Where the only ways to a haven pass robots, the idle one in the way
-//    makes room. A robot with nothing to do that stands in another's way steps aside, and while
-//    obstacles move an idle robot waits in a cell with four free neighbours, not in a dead end.
+//    when they first saw them. Where the only ways to a haven pass robots, the robot in the way
+//    makes room, whatever it was doing; a robot making room that finds a robot on its own way asks
+//    that one in turn, so a row of robots in a corridor moves up like a train (a single level of
+//    asking left three robots jammed in a corner for ever). A robot with nothing to do that stands
+//    in another's way steps aside, and while obstacles move an idle robot waits in a cell whose
+//    four neighbours are free and held by no obstacle, not in a dead end (again after making room).
 //    None of this can see past the horizon: an obstacle that comes, through a wall, into a dead end
-//    holding a robot, slower than the horizon shows it, can still catch the robot (team-check).
+//    holding a robot, slower than the horizon shows it, can still catch the robot. The default
+//    horizon is 30 steps (3 s at 0.1 s a step): with 20, two of team-check's 500 scenarios had a
+//    robot caught in a dead end; with 30, none (and 40 is not better: two others, the reflexes
+//    then send robots elsewhere). It costs 1.3-2x the planning time among moving obstacles.
+//  * Stopping. The stall clocks (no new sub-cell for 4 (cols + rows) + 200 steps, no move for 200)
+//    start when the last obstacle stops at the latest: a team that waited for the obstacles then
+//    still has its time to go round what they left (before, a run could stop 20 steps after them).
 //  * What cannot be reached: a target given up three times (an obstacle parked on it) is left;
 //    free sub-cells sensed but never entered are counted (statistic subcells_skipped, status
 //    partial_coverage).
@@ -88,7 +97,7 @@ constexpr long kStallSteps = 200;
 // directions 0 east, 1 north, 2 west, 3 south (graph::kDx, kDy)
 constexpr int kDc[4] = {1, 0, -1, 0}, kDr[4] = {0, 1, 0, -1};
 
-enum class Tag { kTree, kCross, kSide, kTravel, kDetour, kAside, kEvade };
+enum class Tag { kTree, kCross, kSide, kTravel, kDetour, kAside, kEvade, kRoom };
 
 struct Waypoint {
   long cell;
@@ -187,7 +196,7 @@ private:
   void release(std::size_t i);
   void repair(std::size_t i, long t);
   void startTree(std::size_t i);
-  void clearTheWay(std::size_t i, std::size_t other, long t);
+  void clearTheWay(std::size_t i, std::size_t other, long t, bool forEvader);
   void park(std::size_t i, long t);
 
   const PlanningContext& ctx_;
@@ -447,13 +456,14 @@ void Team::travelTo(std::size_t i, const std::vector<long>& way) {
 
 // Among moving obstacles an idle robot does not wait in a dead end or a corner, where an obstacle
 // coming in would leave it no way out: it goes to the nearest sensed free cell within the sensor's
-// reach whose four neighbours are sensed free and that no robot holds (or stays, where there is none).
+// reach whose four neighbours are sensed free and held by no obstacle now, and that no robot holds
+// (or stays, where there is none). It parks again after it has made room for another robot.
 void Team::park(std::size_t i, long t) {
   RobotState& R = robots_[i];
   R.parked = true;
   auto open = [&](long v) {
     for (int d = 0; d < 4; ++d)
-      if (!knownFree(step(v, d))) return false;
+      if (const long w = step(v, d); !knownFree(w) || heldByObstacle(i, w, t)) return false;
     return true;
   };
   if (open(R.cell)) return;
@@ -584,7 +594,7 @@ void Team::repair(std::size_t i, long t) {
 // holds, by a shortest way that does not pass other; a robot with work goes on afterwards. An idle
 // robot with no room to make (a dead end behind it) takes over the other's target when it can
 // reach it without passing the other.
-void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
+void Team::clearTheWay(std::size_t i, std::size_t other, long t, bool forEvader) {
   RobotState& R = robots_[i];
   const RobotState& O = robots_[other];
   std::vector<long> onWay{O.cell};
@@ -606,7 +616,14 @@ void Team::clearTheWay(std::size_t i, std::size_t other, long t) {
       return;
     }
   }
-  if (R.queue.empty()) {
+  R.parked = false;   // it moves off: where it ends may be a corner
+  if (forEvader) {
+    // room for a robot an obstacle is coming at: a way of its own (kRoom), replacing the one asked
+    // for the step before; robots standing on it are asked in turn (the move loop), so a row of
+    // robots in a corridor moves up like a train
+    while (!R.queue.empty() && R.queue.front().tag == Tag::kRoom) R.queue.pop_front();
+    for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], Tag::kRoom});
+  } else if (R.queue.empty()) {
     for (long v : way) R.queue.push_back({v, Tag::kAside});
   } else if (R.queue.front().tag != Tag::kAside) {   // a robot with work of its own: aside first, then on (repair leads it back)
     for (std::size_t h = way.size(); h-- > 0;) R.queue.push_front({way[h], Tag::kAside});
@@ -780,6 +797,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
   const double lastObstacle = lastObstacle_;
   const long maxSteps = 64L * static_cast<long>(known_.size()) + static_cast<long>(lastObstacle / timing_.step) + 10'000;
   long t = 1, lastMove = 1, lastProgress = 1;
+  long stoppedAt = -1;   // the first step after the last obstacle stopped: the stall clocks start there at the latest
   std::size_t enteredBefore = enteredTotal_;
   // a team that enters nothing new for this long is going round in circles (it needs at most a
   // crossing of the map to reach the next target)
@@ -800,6 +818,7 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
     }
     std::fill(next_.begin(), next_.end(), -1);
     const bool stopped = static_cast<double>(t) * timing_.step > lastObstacle;   // every obstacle has stopped (or there is none)
+    if (stopped && stoppedAt < 0) stoppedAt = t;
     bool anyWork = false, moved = false;
     for (std::size_t i = 0; i < k; ++i) {
       RobotState& R = robots_[i];
@@ -839,8 +858,8 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       }
       if (R.mode == Mode::kIdle && R.queue.empty() && moving_ && !R.parked && !stopped) park(i, t);
       // (a robot on its own way out keeps to it: making room would pile ways on ways)
-      if (R.makeRoomFor >= 0 && (R.queue.empty() || R.queue.front().tag != Tag::kEvade)) clearTheWay(i, static_cast<std::size_t>(R.makeRoomFor), t);
-      else if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t);
+      if (R.makeRoomFor >= 0 && (R.queue.empty() || R.queue.front().tag != Tag::kEvade)) clearTheWay(i, static_cast<std::size_t>(R.makeRoomFor), t, true);
+      else if (R.mode == Mode::kIdle && R.nudgedBy >= 0 && R.queue.empty()) clearTheWay(i, static_cast<std::size_t>(R.nudgedBy), t, false);
       R.makeRoomFor = -1;
       R.nudgedBy = -1;
       if (!R.queue.empty() || R.mode != Mode::kIdle || R.retryAt >= 0) anyWork = true;
@@ -870,15 +889,19 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
                                                   : safeMove(i, R.cell, want, t));
         if (robotsOk && obstaclesOk) {
           to = want;
-          onPlan = R.queue.front().tag != Tag::kDetour && R.queue.front().tag != Tag::kAside && R.queue.front().tag != Tag::kEvade;
+          onPlan = R.queue.front().tag != Tag::kDetour && R.queue.front().tag != Tag::kAside && R.queue.front().tag != Tag::kEvade &&
+                   R.queue.front().tag != Tag::kRoom;
           R.queue.pop_front();
           break;
         }
         // an event: the knowledge base decides (kb=off: wait)
         const int blocker = robotsOk ? -1 : blockerOf(i, want);
-        if (blocker >= 0 && robots_[static_cast<std::size_t>(blocker)].mode == Mode::kIdle && robots_[static_cast<std::size_t>(blocker)].queue.empty())
+        const bool urgent = R.queue.front().tag == Tag::kEvade || R.queue.front().tag == Tag::kRoom;
+        if (blocker >= 0 && urgent)   // on a way out, or making room for one: the robot in the way makes room too
+          robots_[static_cast<std::size_t>(blocker)].makeRoomFor = static_cast<int>(i);
+        else if (blocker >= 0 && robots_[static_cast<std::size_t>(blocker)].mode == Mode::kIdle && robots_[static_cast<std::size_t>(blocker)].queue.empty())
           robots_[static_cast<std::size_t>(blocker)].nudgedBy = static_cast<int>(i);
-        if (attempt > 0 || !kbOn_ || R.queue.front().tag == Tag::kEvade) break;   // a way out waits for the cell: no rule
+        if (attempt > 0 || !kbOn_ || urgent) break;   // a way out (or room for one) waits for the cell: no rule
         KbSituation s;
         s.event = robotsOk ? KbEvent::kObstacleAhead : KbEvent::kRobotAhead;
         s.blockedSteps = R.blocked;
@@ -947,13 +970,14 @@ PlanStatus Team::run(const std::vector<CellIndex>& starts, const TerminationCond
       enteredBefore = enteredTotal_;
       lastProgress = t;
     }
-    if (t - lastProgress > noProgress && stopped) {
+    // (a team that waited for the obstacles gets the same time after they stop as any other)
+    if (stopped && t - std::max(lastProgress, stoppedAt) > noProgress) {
       status = PlanStatus::kPartialCoverage;
       stalled = true;
       why = "no robot entered a new sub-cell for " + std::to_string(noProgress) + " steps";
       break;
     }
-    if (t - lastMove > kStallSteps && stopped) {
+    if (stopped && t - std::max(lastMove, stoppedAt) > kStallSteps) {
       status = PlanStatus::kPartialCoverage;
       stalled = true;
       why = kbOn_ ? "no robot could move for " + std::to_string(kStallSteps) + " steps"
@@ -1025,7 +1049,7 @@ std::vector<ParamSpec> MultiStPlanner::params() const {
            "the knowledge base: on (the shipped rules, planners/data/multi_st_kb.yaml), off (the paper's baseline: wait until the cell "
            "clears) or a coverkit.kb/1 file"},
           {"step", ParamType::kDouble, "0.1", "0.001:1000", "seconds per step (one move between neighbouring sub-cells, or a wait)"},
-          {"horizon", ParamType::kInt, "20", "2:200",
+          {"horizon", ParamType::kInt, "30", "2:200",
            "steps (and sub-cells) over which a robot's sensor predicts the moving obstacles: longer sees an obstacle coming sooner, "
            "and costs more per step"}};
 }
