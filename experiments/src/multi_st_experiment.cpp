@@ -76,16 +76,21 @@ MetricOptions teamMetrics() {
   return mo;
 }
 
-/// Free sub-cells reachable from the starts (`fromTeam`: from where the robots are when the last
-/// obstacle stops) that no robot entered; sub-cells whose centre stays
-/// within r + ρ of an obstacle's last place (blocked for good) are neither reachable nor crossed,
-/// and a move between neighbouring centres that passes within r + ρ of one is no way either (two
-/// clear centres beside a parked obstacle can have a blocked move between them).
-std::size_t missedSubcells(const planners::PlanningContext& ctx, const Plan& plan, bool fromTeam) {
+/// What a team plan left: free sub-cells reachable from the starts, and from where the robots are
+/// when the last obstacle stops, that no robot entered.
+struct Missed {
+  std::size_t fromStarts = 0, fromTeam = 0;
+};
+
+/// Sub-cells whose centre stays within r + ρ of an obstacle's last place (blocked for good) are
+/// neither reachable nor crossed, and a move between neighbouring centres that passes within r + ρ
+/// of one is no way either (two clear centres beside a parked obstacle can have a blocked move
+/// between them).
+Missed missedSubcells(const planners::PlanningContext& ctx, const Plan& plan) {
   const CellGrid& c = ctx.cells;
   const int cols = c.subCols(), rows = c.subRows();
   auto idx = [&](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(x); };
-  std::vector<char> usable(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), 0), seen(usable.size(), 0), entered(usable.size(), 0);
+  std::vector<char> usable(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), 0), entered(usable.size(), 0);
   const double r = ctx.problem.robots[0].radius.get_d();
   for (int y = 0; y < rows; ++y)
     for (int x = 0; x < cols; ++x) {
@@ -116,43 +121,47 @@ std::size_t missedSubcells(const planners::PlanningContext& ctx, const Plan& pla
     }
     return true;
   };
-  std::deque<CellIndex> open;
-  auto source = [&](bool located, CellIndex s) {
-    if (located && !seen[idx(s.col, s.row)]) {
-      seen[idx(s.col, s.row)] = 1;
-      open.push_back(s);
+  // breadth first from the sources (sub-cells, or not located: skipped) over usable sub-cells
+  auto count = [&](const std::vector<std::pair<bool, CellIndex>>& sources) {
+    std::vector<char> seen(usable.size(), 0);
+    std::deque<CellIndex> open;
+    for (const auto& [located, s] : sources)
+      if (located && !seen[idx(s.col, s.row)]) {
+        seen[idx(s.col, s.row)] = 1;
+        open.push_back(s);
+      }
+    std::size_t missed = 0;
+    while (!open.empty()) {
+      const CellIndex v = open.front();
+      open.pop_front();
+      missed += usable[idx(v.col, v.row)] && !entered[idx(v.col, v.row)] ? 1 : 0;
+      for (int d = 0; d < 4; ++d) {
+        const int x = v.col + (d == 0) - (d == 2), y = v.row + (d == 1) - (d == 3);
+        if (x < 0 || y < 0 || x >= cols || y >= rows || !usable[idx(x, y)] || seen[idx(x, y)] || !moveClear(v.col, v.row, x, y)) continue;
+        seen[idx(x, y)] = 1;
+        open.push_back({x, y});
+      }
     }
+    return missed;
   };
-  if (!fromTeam) {
-    for (const Robot& robot : ctx.problem.robots) {
-      CellIndex s;
-      source(c.locateSub(*robot.start, s), s);
-    }
-  } else {
-    // where each robot is when the last obstacle stops (the place it reached last by then)
-    double stop = 0;
-    for (const MovingObstacle& m : ctx.problem.movingObstacles) stop = std::max(stop, m.waypoints.back().t);
-    for (const Path& path : plan.paths) {
-      PointD at = path.start;
-      for (const TimedPoint& e : path.timeline)
-        if (e.t <= stop) at = e.p;
-      CellIndex s;
-      source(c.locateSubD(at, s), s);
-    }
+  std::vector<std::pair<bool, CellIndex>> starts, team;
+  for (const Robot& robot : ctx.problem.robots) {
+    CellIndex s;
+    const bool located = c.locateSub(*robot.start, s);
+    starts.emplace_back(located, s);
   }
-  std::size_t missed = 0;
-  while (!open.empty()) {
-    const CellIndex v = open.front();
-    open.pop_front();
-    missed += usable[idx(v.col, v.row)] && !entered[idx(v.col, v.row)] ? 1 : 0;
-    for (int d = 0; d < 4; ++d) {
-      const int x = v.col + (d == 0) - (d == 2), y = v.row + (d == 1) - (d == 3);
-      if (x < 0 || y < 0 || x >= cols || y >= rows || !usable[idx(x, y)] || seen[idx(x, y)] || !moveClear(v.col, v.row, x, y)) continue;
-      seen[idx(x, y)] = 1;
-      open.push_back({x, y});
-    }
+  // where each robot is when the last obstacle stops (the place it reached last by then)
+  double stop = 0;
+  for (const MovingObstacle& m : ctx.problem.movingObstacles) stop = std::max(stop, m.waypoints.back().t);
+  for (const Path& path : plan.paths) {
+    PointD at = path.start;
+    for (const TimedPoint& e : path.timeline)
+      if (e.t <= stop) at = e.p;
+    CellIndex s;
+    const bool located = c.locateSubD(at, s);
+    team.emplace_back(located, s);
   }
-  return missed;
+  return {count(starts), count(team)};
 }
 
 struct TeamCase {
@@ -263,7 +272,7 @@ public:
       out.rows.push_back(Row{c.table, c.setting, static_cast<std::int64_t>(c.robots), spec, std::string(toString(r.plan.status)),
                              static_cast<std::int64_t>(r.validation.valid), m.makespan, m.sumOfTimes / c.robots, static_cast<std::int64_t>(m.steps),
                              static_cast<std::int64_t>(m.repeatedSteps), m.iterationRate, m.coverageRate, cellsPerRobot(ctx.cells, r.plan),
-                             m.balance, static_cast<std::int64_t>(missedSubcells(ctx, r.plan, false)), r.planSeconds});
+                             m.balance, static_cast<std::int64_t>(missedSubcells(ctx, r.plan).fromStarts), r.planSeconds});
     }
     return out;
   }
@@ -461,16 +470,15 @@ public:
       balanced = m.metrics.makespan;
       balancedValid = m.validation.valid;
     }
+    const Missed missed = missedSubcells(ctx, a.plan);
     for (const Value& v : std::vector<Value>{std::string(toString(a.plan.status)), static_cast<std::int64_t>(a.validation.valid), staticViolations,
                                              kinds["robot_robot"], kinds["robot_obstacle"], kinds["timeline"],
-                                             static_cast<std::int64_t>(missedSubcells(ctx, a.plan, false)),
-                                             static_cast<std::int64_t>(missedSubcells(ctx, a.plan, true)),
+                                             static_cast<std::int64_t>(missed.fromStarts), static_cast<std::int64_t>(missed.fromTeam),
                                              static_cast<std::int64_t>(datasets::pathJson(da) == datasets::pathJson(db)), a.metrics.makespan, balanced,
                                              balancedValid, a.planSeconds, a.plan.message})
       row.push_back(v);
     Output out{{row}, {}};
-    const std::size_t missed = static_cast<std::size_t>(std::get<std::int64_t>(row[11]) + std::get<std::int64_t>(row[12]));
-    if (!a.validation.valid || missed > 0) {   // the world, its obstacles and the command, to look again
+    if (!a.validation.valid || missed.fromStarts + missed.fromTeam > 0) {   // the world, its obstacles and the command, to look again
       const std::string base = "failures/seed-" + std::to_string(c.seed);
       std::string starts;
       for (const Robot& robot : ctx.problem.robots) starts += " --start " + formatDouble(toDouble(robot.start->x)) + "," + formatDouble(toDouble(robot.start->y));

@@ -63,7 +63,6 @@
 #include <numeric>
 #include <queue>
 #include <random>
-#include <tuple>
 #include <unordered_map>
 
 namespace coverkit::planners {
@@ -137,18 +136,20 @@ std::size_t longest(const std::vector<std::vector<CellIndex>>& routes) {
   return n;
 }
 
-/// DARP's re-weighting, additively: each mega-cell goes to the region i with the least d_i + w_i
-/// (d_i: steps from start i within the component, ties to the lower index), and w_i grows while
-/// region i is larger than the mean. Additive weights keep every region connected to its start (a
-/// cell's predecessor towards start i is no farther from i, relative to any other start, than the
-/// cell), where DARP's multiplicative ones need a connectivity repair. The assignment with the
-/// smallest largest region (then the least sum of squares) over 200 rounds replaces the breadth-first
-/// one when better; the moves of single mega-cells then go on from it. Memory k × n distances: only
-/// for k · n ≤ 2^22. `seed` 0: the weights start at 0; else at seeded random offsets (a restart).
-void reweighted(const graph::GridGraph& g, const std::vector<int>& root, std::vector<int>& owner, std::vector<long>& size,
-                const TerminationCondition& stop, std::uint64_t seed) {
+/// The largest region and the sum of the squared sizes: a split is better when both are smaller
+/// (in that order).
+std::pair<long, long> spread(const std::vector<long>& sizes) {
+  long peak = 0, squares = 0;
+  for (long x : sizes) {
+    peak = std::max(peak, x);
+    squares += x * x;
+  }
+  return {peak, squares};
+}
+
+/// Steps from each start within the graph: k rows of n, -1 where a node is not reached.
+std::vector<int> startDistances(const graph::GridGraph& g, const std::vector<int>& root) {
   const std::size_t k = root.size(), n = g.size();
-  if (k < 2 || k * n > (std::size_t{1} << 22)) return;
   std::vector<int> dist(k * n, -1);
   std::deque<int> open;
   for (std::size_t i = 0; i < k; ++i) {
@@ -165,15 +166,23 @@ void reweighted(const graph::GridGraph& g, const std::vector<int>& root, std::ve
         }
     }
   }
-  auto score = [&](const std::vector<long>& z) {
-    long peak = 0, sq = 0;
-    for (long x : z) {
-      peak = std::max(peak, x);
-      sq += x * x;
-    }
-    return std::make_pair(peak, sq);
-  };
-  auto best = score(size);
+  return dist;
+}
+
+/// DARP's re-weighting, additively: each mega-cell goes to the region i with the least d_i + w_i
+/// (d_i: steps from start i within the component, ties to the lower index), and w_i grows while
+/// region i is larger than the mean. Additive weights keep every region connected to its start (a
+/// cell's predecessor towards start i is no farther from i, relative to any other start, than the
+/// cell), where DARP's multiplicative ones need a connectivity repair. The assignment with the
+/// smallest largest region (then the least sum of squares) over 200 rounds replaces the breadth-first
+/// one when better; the moves of single mega-cells then go on from it. Memory k × n distances: only
+/// for k · n ≤ 2^22 (`dist`: startDistances). `seed` 0: the weights start at 0; else at seeded random
+/// offsets (a restart).
+void reweighted(const graph::GridGraph& g, const std::vector<int>& root, const std::vector<int>& dist, std::vector<int>& owner,
+                std::vector<long>& size, const TerminationCondition& stop, std::uint64_t seed) {
+  const std::size_t k = root.size(), n = g.size();
+  std::deque<int> open;
+  auto best = spread(size);
   long total = 0;
   for (long x : size) total += x;
   const double mean = static_cast<double>(total) / static_cast<double>(k);
@@ -184,6 +193,7 @@ void reweighted(const graph::GridGraph& g, const std::vector<int>& root, std::ve
   }
   std::vector<int> mine(n, -1);
   std::vector<long> z(k, 0);
+  std::vector<char> reached(n, 0);
   for (int round = 0; round < 200; ++round) {
     if ((round & 15) == 15 && stop.expired()) return;
     std::fill(z.begin(), z.end(), 0);
@@ -207,7 +217,7 @@ void reweighted(const graph::GridGraph& g, const std::vector<int>& root, std::ve
     }
     for (std::size_t i = 0; i < k; ++i) mine[static_cast<std::size_t>(root[i])] = static_cast<int>(i);
     // connected to its start within its region, else to the region of a neighbour that is (rare: ties)
-    std::vector<char> reached(n, 0);
+    std::fill(reached.begin(), reached.end(), 0);
     for (std::size_t i = 0; i < k; ++i) {
       open.assign(1, root[i]);
       reached[static_cast<std::size_t>(root[i])] = 1;
@@ -236,7 +246,7 @@ void reweighted(const graph::GridGraph& g, const std::vector<int>& root, std::ve
     }
     for (std::size_t v = 0; v < n; ++v)
       if (mine[v] >= 0) ++z[static_cast<std::size_t>(mine[v])];
-    const auto s = score(z);
+    const auto s = spread(z);
     if (s < best) {
       best = s;
       owner = mine;
@@ -263,8 +273,8 @@ void reweighted(const graph::GridGraph& g, const std::vector<int>& root, std::ve
 /// (Tarjan's depth-first search over the region, redone only for regions a move changed).
 /// Returns the owner of each node (-1 outside the regions), or empty when two robots start in one
 /// mega-cell or the time limit ends the balancing.
-std::vector<int> regionsFrom(const graph::GridGraph& g, const std::vector<int>& root, const TerminationCondition& stop, bool reweight,
-                             std::uint64_t seed) {
+std::vector<int> regionsFrom(const graph::GridGraph& g, const std::vector<int>& root, const TerminationCondition& stop,
+                             const std::vector<int>* dist, std::uint64_t seed) {
   const std::size_t k = root.size(), n = g.size();
   std::vector<int> owner(n, -1);
   std::vector<long> size(k, 0);
@@ -286,7 +296,7 @@ std::vector<int> regionsFrom(const graph::GridGraph& g, const std::vector<int>& 
       open.push_back(u);
     }
   }
-  if (reweight) reweighted(g, root, owner, size, stop, seed);
+  if (dist) reweighted(g, root, *dist, owner, size, stop, seed);
   std::vector<char> isRoot(n, 0);
   for (int r : root) isRoot[static_cast<std::size_t>(r)] = 1;
   // cut[v]: v is an articulation point of its region (removing it would split the region), for
@@ -435,34 +445,26 @@ std::vector<int> regionsFrom(const graph::GridGraph& g, const std::vector<int>& 
 /// region, then the smaller sum of squares). On small maps (k · n ≤ 2^14) still above it: up to 48
 /// restarts of the re-weighting from seeded random weights, the best kept (deterministic).
 std::vector<int> balancedRegions(const graph::GridGraph& g, const std::vector<int>& root, const TerminationCondition& stop) {
-  std::vector<int> owner = regionsFrom(g, root, stop, false, 0);
-  if (owner.empty()) return owner;
-  const std::size_t k = root.size();
+  std::vector<int> owner = regionsFrom(g, root, stop, nullptr, 0);
+  const std::size_t k = root.size(), n = g.size();
+  if (owner.empty() || k < 2 || k * n > (std::size_t{1} << 22)) return owner;
   auto score = [&](const std::vector<int>& o) {
     std::vector<long> z(k, 0);
-    long total = 0;
     for (int r : o)
-      if (r >= 0) {
-        ++z[static_cast<std::size_t>(r)];
-        ++total;
-      }
-    long peak = 0, sq = 0;
-    for (long x : z) {
-      peak = std::max(peak, x);
-      sq += x * x;
-    }
-    return std::make_tuple(peak, sq, (total + static_cast<long>(k) - 1) / static_cast<long>(k));
+      if (r >= 0) ++z[static_cast<std::size_t>(r)];
+    return spread(z);
   };
-  const auto first = score(owner);
-  if (std::get<0>(first) <= std::get<2>(first)) return owner;
-  auto key = [](const auto& s) { return std::make_pair(std::get<0>(s), std::get<1>(s)); };
-  auto best = key(first);
-  const long even = std::get<2>(first);
-  const std::size_t restarts = k * g.size() <= (std::size_t{1} << 14) ? 48 : 0;
+  auto best = score(owner);
+  long total = 0;
+  for (int r : owner) total += r >= 0 ? 1 : 0;
+  const long even = (total + static_cast<long>(k) - 1) / static_cast<long>(k);   // the mean, rounded up
+  if (best.first <= even) return owner;
+  const std::vector<int> dist = startDistances(g, root);   // the same for every restart
+  const std::size_t restarts = k * n <= (std::size_t{1} << 14) ? 48 : 0;
   for (std::size_t r = 0; r <= restarts && best.first > even && !stop.expired(); ++r) {
-    std::vector<int> again = regionsFrom(g, root, stop, true, r);
+    std::vector<int> again = regionsFrom(g, root, stop, &dist, r);
     if (again.empty()) continue;
-    if (const auto s = key(score(again)); s < best) {
+    if (const auto s = score(again); s < best) {
       best = s;
       owner = std::move(again);
     }
