@@ -35,6 +35,16 @@
 //      own tree, entered from a sweep that crossed the run to them, as if the run were a tree edge;
 //    * tips are cut: where U ∩ C-free narrows to a point its boundary reverses (a spike); it is cut
 //      straight across where the two sides are r/16 apart.
+//  - Fewer turns (our defaults; the paper's tree and every detour stay reachable with
+//    `tree=dfs_ccw;detours=every`): the paper promises paths no longer than Full-STC's, and turning
+//    is what costs a real robot time. The tree is `kruskal_straight` (every row of free mega-cells
+//    one straight branch): the sweep at the end of a branch facing a partial mega-cell then goes
+//    straight on from the tour's lane, round the contour and straight back, and adds no corner. Any
+//    other sweep leaves the tour and comes back (two corners, 180° more turning): with
+//    `detours=needed` it is made only where it sweeps at least r² that the tour, the branch-end
+//    sweeps and the detours taken before it (in tour order) do not (estimated in doubles from
+//    samples; it decides which sweeps are made, never whether one is safe). Offline only: the
+//    decision looks at the whole tour, which an online robot does not know yet.
 //  - Exactness: the sweep runs on the C-space of radius r + ε + δ. ε (a power of two just above
 //    the C-space's approximation bound, 1e-6 × the map's extent) keeps the sweep outside the
 //    conservative C-obstacles of radius r as well, whose irrational edges are replaced by pieces up
@@ -69,6 +79,7 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <unordered_map>
 
 namespace coverkit::planners {
 
@@ -122,6 +133,113 @@ bool pieceClear(ClearanceChecker& check, const PathSegment& p) {
   return p.kind == PathSegment::Kind::kLine ? check.clear(p.from, p.to) : check.clearArc(p.from, p.to, p.center, p.ccw);
 }
 
+/// Unit heading of a piece at its start or end.
+PointD headingOf(const PathSegment& p, bool atEnd) {
+  double x, y;
+  if (p.kind == PathSegment::Kind::kLine) {
+    x = p.to.x - p.from.x, y = p.to.y - p.from.y;
+  } else {
+    const PointD q = atEnd ? p.to : p.from;
+    x = -(q.y - p.center.y), y = q.x - p.center.x;
+    if (!p.ccw) x = -x, y = -y;
+  }
+  const double n = std::hypot(x, y);
+  return n > 0 ? PointD{x / n, y / n} : PointD{0, 0};
+}
+
+/// The point at arc length `l` from the start of a piece (0 ≤ l ≤ len, its length).
+PointD pointAlong(const PathSegment& p, double l, double len) {
+  if (len <= 0) return p.from;
+  if (p.kind == PathSegment::Kind::kLine) {
+    const double t = std::min(1.0, std::max(0.0, l / len));
+    return {p.from.x + t * (p.to.x - p.from.x), p.from.y + t * (p.to.y - p.from.y)};
+  }
+  const double rho = std::hypot(p.from.x - p.center.x, p.from.y - p.center.y);
+  const double a = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x) + (p.ccw ? 1 : -1) * l / rho;
+  return {p.center.x + rho * std::cos(a), p.center.y + rho * std::sin(a)};
+}
+
+/// Whether p lies within `limit` of piece s (in doubles: squared distances for lines; for arcs,
+/// the circle's annulus first, so that most arcs need no angles).
+bool withinReach(const PathSegment& s, PointD p, double limit) {
+  if (s.kind == PathSegment::Kind::kLine) {
+    const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y, len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((p.x - s.from.x) * dx + (p.y - s.from.y) * dy) / len2 : 0;
+    t = std::min(1.0, std::max(0.0, t));
+    const double ex = p.x - s.from.x - t * dx, ey = p.y - s.from.y - t * dy;
+    return ex * ex + ey * ey <= limit * limit;
+  }
+  const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
+  const double dc = std::hypot(p.x - s.center.x, p.y - s.center.y);
+  if (std::abs(dc - rho) > limit) return false;   // beyond the whole circle's reach
+  const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x), a1 = std::atan2(s.to.y - s.center.y, s.to.x - s.center.x);
+  const double ap = std::atan2(p.y - s.center.y, p.x - s.center.x);
+  auto sweep = [&](double from, double to) {  // ccw angle from `from` to `to` in [0, 2π)
+    double d = to - from;
+    while (d < 0) d += 2 * M_PI;
+    return d;
+  };
+  const bool inside = s.ccw ? sweep(a0, ap) <= sweep(a0, a1) : sweep(a1, ap) <= sweep(a1, a0);
+  if (inside) return true;   // |dc − ρ| ≤ limit above
+  return std::min(std::hypot(p.x - s.from.x, p.y - s.from.y), std::hypot(p.x - s.to.x, p.y - s.to.y)) <= limit;
+}
+
+/// The pieces of a path by bucket (side 2r), growing as pieces are added, for "does some piece
+/// pass within r of this point" in doubles. It decides only which sweeps are worth making, never
+/// safety; only `find` is used on the map, so the answers do not depend on its order.
+class CoverIndex {
+public:
+  explicit CoverIndex(double r) : r_(r), cell_(2 * r) {}
+  void add(const PathSegment& s) {
+    const std::size_t i = pieces_.size();
+    pieces_.push_back(s);
+    BoxD b{std::min(s.from.x, s.to.x), std::min(s.from.y, s.to.y), std::max(s.from.x, s.to.x), std::max(s.from.y, s.to.y)};
+    if (s.kind == PathSegment::Kind::kArc) {
+      const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
+      b = {s.center.x - rho, s.center.y - rho, s.center.x + rho, s.center.y + rho};
+    }
+    const double reach = r_ * (1 + 1e-6);
+    for (long by = key(b.ymin - reach); by <= key(b.ymax + reach); ++by)
+      for (long bx = key(b.xmin - reach); bx <= key(b.xmax + reach); ++bx) cells_[pack(bx, by)].push_back(i);
+  }
+  bool covered(PointD p) const {
+    const auto it = cells_.find(pack(key(p.x), key(p.y)));
+    if (it == cells_.end()) return false;
+    const double limit = r_ * (1 + 1e-9);
+    for (std::size_t i : it->second)
+      if (withinReach(pieces_[i], p, limit)) return true;
+    return false;
+  }
+  /// The area within r of `pieces` that no piece added so far reaches, estimated from samples every
+  /// r/4 along them at five offsets across (−3r/4 … 3r/4): every sample lies in the coverable region,
+  /// as the pieces lie in C-free.
+  double uncovered(const std::vector<PathSegment>& pieces) const {
+    double area = 0;
+    for (const PathSegment& p : pieces) {
+      const double len = p.length();
+      const int n = std::max(1, static_cast<int>(std::ceil(len / (r_ / 4))));
+      for (int k = 0; k < n; ++k) {
+        const PointD q = pointAlong(p, (k + 0.5) * len / n, len);
+        PathSegment at = p;
+        at.from = q;
+        const PointD t = headingOf(at, false);
+        for (double o : {-0.75, -0.375, 0.0, 0.375, 0.75})
+          if (!covered(PointD{q.x - o * r_ * t.y, q.y + o * r_ * t.x})) area += len / n * 0.375 * r_;
+      }
+    }
+    return area;
+  }
+
+private:
+  long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+  static std::uint64_t pack(long x, long y) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32 | static_cast<std::uint32_t>(y);
+  }
+  double r_, cell_;
+  std::vector<PathSegment> pieces_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+};
+
 /// The tour of a pocket's tree from a sub-cell (closed), or empty.
 using PocketWalk = std::function<std::vector<CellIndex>(CellIndex start)>;
 
@@ -135,7 +253,8 @@ public:
           ObstacleSensor* sensor = nullptr, OnlineSweeper* sweeper = nullptr)
       : ctx_(ctx), cells_(ctx.cells), sensor_(sensor), sweeper_(sweeper), trace_(params.text("sweeps") == "trace"),
         every_(params.text("entries") == "every"),
-        throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"), check_(check),
+        throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"),
+        needed_(!sensor && params.text("detours") == "needed"), check_(check),
         pocketWalk_(std::move(pocketWalk)), inTree_(cells_.megaCount(), 0), swept_(cells_.megaCount(), 0) {}
 
   /// The sweeps of `walk`'s openings (and the pockets behind them) inserted into its placed `path`.
@@ -159,6 +278,7 @@ public:
     plan.statistics["arcs"] = static_cast<double>(arcs_);
     plan.statistics["pockets_joined"] = static_cast<double>(pocketsJoined_);
     plan.statistics["pockets_left"] = static_cast<double>(pocketsLeft_);
+    plan.statistics["detours_skipped"] = static_cast<double>(skipped_);
   }
 
 private:
@@ -272,6 +392,52 @@ private:
 
   bool clear(const PathSegment& p) { return pieceClear(check_, p); }
 
+  static int dirOf(CellIndex a, CellIndex b) {
+    for (int d = 0; d < 4; ++d)
+      if (b.col - a.col == graph::kDx[d] && b.row - a.row == graph::kDy[d]) return d;
+    return -1;
+  }
+
+  /// Which sweeps to make (detours=needed). A sweep whose two lanes go straight on from the tour's
+  /// moves before and after it (the end of a branch facing the leaf) replaces the tour's turn by the
+  /// contour and adds no corner: always made. So is one that may reach a pocket. Every other sweep
+  /// leaves the tour and comes back, two more corners and 180° more turning, and is made only when
+  /// what it would sweep is not swept already, by the tour or the sweeps taken before it (about
+  /// r² of it, estimated in doubles: it decides only which sweeps are made; each is checked exactly).
+  std::vector<std::uint8_t> chosen(const std::vector<CellIndex>& walk, const std::vector<Opening>& open,
+                                   const std::vector<CSpace::Sweep>& sweeps, const Path& path) const {
+    std::vector<std::uint8_t> take(open.size(), 1);
+    if (!needed_) return take;
+    const double r = ctx_.problem.robots.at(0).radius.get_d();
+    CoverIndex index(r);
+    for (const PathSegment& p : path.segments) index.add(p);
+    std::vector<std::size_t> detours;
+    for (std::size_t j = 0; j < open.size(); ++j) {
+      const Opening& o = open[j];
+      const CSpace::Sweep& sw = sweeps[j];
+      if (!sw.reached || sw.pieces.empty()) continue;
+      const int right = (o.dir + 3) & 3, i = static_cast<int>(o.move);
+      const bool in = i > 0 && dirOf(walk[o.move - 1], walk[o.move]) == right;
+      const bool out = o.move + 2 < walk.size() && dirOf(walk[o.move + 1], walk[o.move + 2]) == ((right + 2) & 3);
+      const int zc = o.leafCol + o.run * graph::kDx[right], zr = o.leafRow + o.run * graph::kDy[right];
+      const bool pocket = pockets_ && sw.farSide && cells_.insideMega(zc, zr) && cells_.mega(zc, zr) == CellState::kFree &&
+                          !inTree_[megaIndex(zc, zr)];
+      if ((in && out) || pocket) {
+        for (const PathSegment& p : sw.pieces) index.add(p);
+      } else {
+        detours.push_back(j);
+      }
+    }
+    for (std::size_t j : detours) {
+      if (index.uncovered(sweeps[j].pieces) >= r * r) {
+        for (const PathSegment& p : sweeps[j].pieces) index.add(p);
+      } else {
+        take[j] = 0;
+      }
+    }
+    return take;
+  }
+
   /// Each opening's move is part of one axis-parallel segment of the path (runs are merged, or cut
   /// near obstacles); the sweep replaces the part of it between its entry and exit.
   void insert(const std::vector<CellIndex>& walk, const std::vector<Opening>& open, const std::vector<CSpace::Sweep>& sweeps,
@@ -280,12 +446,17 @@ private:
     out.reserve(path.segments.size());
     std::size_t k = 0;  // next segment of `path` not yet copied
     const double tol = 1e-9 * std::max(1.0, cells_.subSizeD() * std::max(cells_.megaCols(), cells_.megaRows()));
+    const std::vector<std::uint8_t> take = chosen(walk, open, sweeps, path);
     for (std::size_t j = 0; j < open.size(); ++j) {
       const CSpace::Sweep& s = sweeps[j];
       const Opening& o = open[j];
       traced_ += s.traced;
       if (!s.reached || s.pieces.empty()) {
         ++unreached_;
+        continue;
+      }
+      if (!take[j]) {
+        ++skipped_;
         continue;
       }
       // a run swept end to end from one side (along U's far side) is not swept again from its other end
@@ -418,13 +589,14 @@ private:
   const CellGrid& cells_;
   ObstacleSensor* sensor_;
   OnlineSweeper* sweeper_;
-  bool trace_, every_, throughRuns_, pockets_;
+  bool trace_, every_, throughRuns_, pockets_, needed_;
   ClearanceChecker& check_;
   PocketWalk pocketWalk_;
   std::vector<std::uint8_t> inTree_, swept_;
   std::set<std::array<int, 4>> runsDone_;
   std::size_t inserted_ = 0, rejected_ = 0, unreached_ = 0, shared_ = 0, arcs_ = 0, pocketsJoined_ = 0, pocketsLeft_ = 0;
   std::size_t traced_ = 0;  ///< sweeps (of any outcome) made by the direct trace
+  std::size_t skipped_ = 0; ///< detours left out: what they would sweep was swept already
 };
 
 /// Segments by bucket (side 2r), for "does anything pass within r of this point" in doubles.
@@ -470,37 +642,13 @@ public:
     const std::size_t c = static_cast<std::size_t>(by * nx_ + bx);
     const double limit = r_ * (1 + 1e-9);
     for (std::size_t k = start_[c]; k < start_[c + 1]; ++k)
-      if (within(path.segments[pieces_[k]], w, limit)) return true;
+      if (withinReach(path.segments[pieces_[k]], w, limit)) return true;
     return false;
   }
 
 private:
   long key(double v, double origin, long n) const {
     return std::min(n - 1, std::max(0L, static_cast<long>((v - origin) / cell_)));
-  }
-  /// Whether p lies within `limit` of piece s (in doubles: squared distances for lines; for arcs,
-  /// the circle's annulus first, so that most arcs need no angles).
-  static bool within(const PathSegment& s, PointD p, double limit) {
-    if (s.kind == PathSegment::Kind::kLine) {
-      const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y, len2 = dx * dx + dy * dy;
-      double t = len2 > 0 ? ((p.x - s.from.x) * dx + (p.y - s.from.y) * dy) / len2 : 0;
-      t = std::min(1.0, std::max(0.0, t));
-      const double ex = p.x - s.from.x - t * dx, ey = p.y - s.from.y - t * dy;
-      return ex * ex + ey * ey <= limit * limit;
-    }
-    const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
-    const double dc = std::hypot(p.x - s.center.x, p.y - s.center.y);
-    if (std::abs(dc - rho) > limit) return false;   // beyond the whole circle's reach
-    const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x), a1 = std::atan2(s.to.y - s.center.y, s.to.x - s.center.x);
-    const double ap = std::atan2(p.y - s.center.y, p.x - s.center.x);
-    auto sweep = [&](double from, double to) {  // ccw angle from `from` to `to` in [0, 2π)
-      double d = to - from;
-      while (d < 0) d += 2 * M_PI;
-      return d;
-    };
-    const bool inside = s.ccw ? sweep(a0, ap) <= sweep(a0, a1) : sweep(a1, ap) <= sweep(a1, a0);
-    if (inside) return true;   // |dc − ρ| ≤ limit above
-    return std::min(std::hypot(p.x - s.from.x, p.y - s.from.y), std::hypot(p.x - s.to.x, p.y - s.to.y)) <= limit;
   }
   double r_, cell_ = 1, x0_ = 0, y0_ = 0;
   long nx_ = 1, ny_ = 1;
@@ -572,32 +720,6 @@ void fillCorners(const PlanningContext& ctx, ClearanceChecker& check, Path& path
   path.segments.swap(out);
   plan.statistics["corners_filled"] = static_cast<double>(filled);
   plan.statistics["corners_left"] = static_cast<double>(blocked);
-}
-
-/// Unit heading of a piece at its start or end.
-PointD headingOf(const PathSegment& p, bool atEnd) {
-  double x, y;
-  if (p.kind == PathSegment::Kind::kLine) {
-    x = p.to.x - p.from.x, y = p.to.y - p.from.y;
-  } else {
-    const PointD q = atEnd ? p.to : p.from;
-    x = -(q.y - p.center.y), y = q.x - p.center.x;
-    if (!p.ccw) x = -x, y = -y;
-  }
-  const double n = std::hypot(x, y);
-  return n > 0 ? PointD{x / n, y / n} : PointD{0, 0};
-}
-
-/// The point at arc length `l` from the start of a piece (0 ≤ l ≤ len, its length).
-PointD pointAlong(const PathSegment& p, double l, double len) {
-  if (len <= 0) return p.from;
-  if (p.kind == PathSegment::Kind::kLine) {
-    const double t = std::min(1.0, std::max(0.0, l / len));
-    return {p.from.x + t * (p.to.x - p.from.x), p.from.y + t * (p.to.y - p.from.y)};
-  }
-  const double rho = std::hypot(p.from.x - p.center.x, p.from.y - p.center.y);
-  const double a = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x) + (p.ccw ? 1 : -1) * l / rho;
-  return {p.center.x + rho * std::cos(a), p.center.y + rho * std::sin(a)};
 }
 
 /// Cuts the tips of thin fingers. Where U ∩ C-free narrows to a point (an obstacle edge almost
@@ -708,7 +830,12 @@ std::string SmoothStcPlanner::description() const {
 
 std::vector<ParamSpec> SmoothStcPlanner::params() const {
   std::vector<ParamSpec> p = StcSkeleton::params();
+  for (ParamSpec& e : p)
+    if (e.name == "tree") e.defaultValue = "kruskal_straight";  // long straight branches: fewer turns (docs/smooth-stc.md)
   for (const ParamSpec& e : entryParam()) p.push_back(e);
+  p.push_back({"detours", ParamType::kChoice, "needed", "needed|every",
+               "sweeps that leave the tour and come back (two corners, 180 degrees more turning): only where they sweep "
+               "at least r^2 that the tour and the other sweeps do not (needed), or every one (the paper's)"});
   return p;
 }
 
