@@ -279,6 +279,11 @@ public:
     plan.statistics["pockets_joined"] = static_cast<double>(pocketsJoined_);
     plan.statistics["pockets_left"] = static_cast<double>(pocketsLeft_);
     plan.statistics["detours_skipped"] = static_cast<double>(skipped_);
+    plan.statistics["rooms_joined"] = static_cast<double>(roomsJoined_);
+    plan.statistics["rooms_left"] = static_cast<double>(roomsLeft_);
+    plan.statistics["gaps_visited"] = static_cast<double>(gapsJoined_);
+    plan.statistics["gaps_left"] = static_cast<double>(gapsLeft_);
+    plan.statistics["excursions_dropped"] = static_cast<double>(excursionsDropped_);
   }
 
 private:
@@ -585,6 +590,253 @@ private:
     ++pocketsJoined_;
   }
 
+
+  /// Rooms (rooms=travel): free mega-cells that no tour reaches, where partially occupied mega-cells
+  /// cut them off and no sweep crossed to them (a room behind a door narrower than a mega-cell or
+  /// not in line with a lane). A breadth-first search over free sub-cells, from every sub-cell
+  /// whose centre the path passes, finds the nearest sub-cell e of such a mega-cell; the robot
+  /// leaves the path there, goes to e from centre to centre (each move stays in the union of two
+  /// free sub-cells, which holds the disc, and is checked exactly), tours the room's own tree with
+  /// its sweeps (and pockets) from e back to e, and returns the same way. The search goes on; a
+  /// room toured is in a tree, so it is entered once. Which sub-cells start the search, and the
+  /// order, follow the path: the plan is the same every time.
+public:
+  struct Source {
+    std::size_t segment;
+    PointD at;
+  };
+
+  void travel(Path& path, bool gaps) {
+    std::vector<std::uint8_t> failed(cells_.megaCount(), 0);
+    while (travelPass(path, failed, false)) {
+    }
+    if (!gaps) return;
+    markGaps(path);
+    while (travelPass(path, failed, true)) {
+    }
+  }
+
+  /// Gaps (gaps=visit): free sub-cells that the path, with its rooms, leaves uncovered (two of five
+  /// points, the centre and four at r/2 from it, farther than r from every piece: estimated in
+  /// doubles, it only chooses where to go). They lie in partially occupied mega-cells that no sweep
+  /// reached (between obstacles closer than a mega-cell) or in free ones that none of the trees
+  /// holds. Each 4-connected group of them is toured depth-first from the nearest, from centre to
+  /// centre (each move in the union of two free sub-cells), as Full-STC goes through a partially
+  /// occupied mega-cell; a dead end one sub-cell wide is left the way it was entered.
+  void markGaps(const Path& path) {
+    const double r = ctx_.problem.robots.at(0).radius.get_d();
+    CoverIndex index(r);
+    for (const PathSegment& p : path.segments) index.add(p);
+    gap_.assign(cells_.subCount(), 0);
+    for (int row = 0; row < cells_.subRows(); ++row)
+      for (int col = 0; col < cells_.subCols(); ++col) {
+        if (cells_.sub(col, row) != CellState::kFree) continue;
+        const PointD c = cells_.subCenterD(col, row);
+        int missed = 0;
+        for (const PointD& d : {PointD{0, 0}, PointD{r / 2, 0}, PointD{-r / 2, 0}, PointD{0, r / 2}, PointD{0, -r / 2}})
+          missed += !index.covered(PointD{c.x + d.x, c.y + d.y});
+        gap_[static_cast<std::size_t>(row) * cells_.subCols() + col] = missed >= 2;
+      }
+  }
+
+  /// The closed depth-first walk over the group of gaps holding t, from t back to t; the group's
+  /// gaps are taken.
+  std::vector<CellIndex> gapWalk(int t) {
+    const int sc = cells_.subCols();
+    std::vector<CellIndex> walk{{t % sc, t / sc}};
+    std::vector<std::pair<int, int>> stack{{t, 0}};
+    gap_[static_cast<std::size_t>(t)] = 0;
+    while (!stack.empty()) {
+      const int v = stack.back().first, d = stack.back().second;
+      if (d == 4) {
+        stack.pop_back();
+        if (!stack.empty()) walk.push_back({stack.back().first % sc, stack.back().first / sc});
+        continue;
+      }
+      ++stack.back().second;
+      const int c = v % sc + graph::kDx[d], r = v / sc + graph::kDy[d];
+      if (!cells_.insideSub(c, r) || !gap_[static_cast<std::size_t>(r) * sc + c]) continue;
+      gap_[static_cast<std::size_t>(r) * sc + c] = 0;
+      walk.push_back({c, r});
+      stack.push_back({r * sc + c, 0});
+    }
+    return walk;
+  }
+
+  /// One pass: every room found is toured unless its way leaves the path from the same sub-cell
+  /// by the same first step as one toured before in this pass (coming back from one and going out
+  /// to the other would reverse on the spot); the next pass finds it from the ways and rooms added.
+  /// Returns whether a room was toured.
+  bool travelPass(Path& path, std::vector<std::uint8_t>& failed, bool gaps) {
+    const int sc = cells_.subCols(), sr = cells_.subRows();
+    const double D = cells_.subSizeD(), tol = 1e-9 * std::max(1.0, D * std::max(sc, sr));
+    auto index = [&](int c, int r) { return static_cast<std::size_t>(r) * sc + c; };
+    // the sub-cells whose centre the path passes, with the segment and the point
+    std::vector<std::int64_t> sourceOf(cells_.subCount(), -1);
+    std::vector<Source> sources;
+    std::vector<int> queue;
+    auto addSource = [&](PointD p, std::size_t k) {
+      CellIndex c;
+      if (!cells_.locateSubD(p, c) || cells_.sub(c.col, c.row) != CellState::kFree) return;
+      const PointD q = cells_.subCenterD(c.col, c.row);
+      if (std::abs(q.x - p.x) > tol || std::abs(q.y - p.y) > tol || sourceOf[index(c.col, c.row)] >= 0) return;
+      sourceOf[index(c.col, c.row)] = static_cast<std::int64_t>(sources.size());
+      sources.push_back({k, p});
+      queue.push_back(static_cast<int>(index(c.col, c.row)));
+    };
+    // every centre an axis-parallel line passes through (lanes, and the straight parts of sweeps)
+    const PointD c0 = cells_.subCenterD(0, 0);
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+      const PathSegment& g = path.segments[k];
+      // axis-parallel up to the rounding of a sweep's ends (an ulp)
+      const bool horizontal = std::abs(g.from.y - g.to.y) <= tol, vertical = std::abs(g.from.x - g.to.x) <= tol;
+      if (g.kind != PathSegment::Kind::kLine || horizontal == vertical) continue;
+      const double fixed = horizontal ? g.from.y : g.from.x, origin = horizontal ? c0.y : c0.x, along0 = horizontal ? c0.x : c0.y;
+      const double lane = std::round((fixed - origin) / D);
+      if (std::abs(origin + lane * D - fixed) > tol) continue;
+      const double a = horizontal ? g.from.x : g.from.y, b = horizontal ? g.to.x : g.to.y;
+      const long first = static_cast<long>(std::ceil((std::min(a, b) - along0) / D - 1e-9)), last = static_cast<long>(std::floor((std::max(a, b) - along0) / D + 1e-9));
+      for (long i = 0; i <= last - first; ++i) {
+        const long c = a <= b ? first + i : last - i;   // in the line's direction
+        const double at = std::min(std::max(along0 + static_cast<double>(c) * D, std::min(a, b)), std::max(a, b));
+        // on the segment as it is: its end where the centre is one (up to tol), else the point
+        // there (the two parts the split makes are checked exactly)
+        const double t = a == b ? 0 : (at - a) / (b - a);
+        const PointD on = std::abs(at - a) <= tol   ? g.from
+                          : std::abs(at - b) <= tol ? g.to
+                                                    : PointD{g.from.x + t * (g.to.x - g.from.x), g.from.y + t * (g.to.y - g.from.y)};
+        addSource(on, k);
+      }
+    }
+    std::vector<int> parent(cells_.subCount(), -2);
+    for (int v : queue) parent[static_cast<std::size_t>(v)] = -1;
+    // excursions by segment: (where on it, the pieces)
+    std::vector<std::vector<std::pair<PointD, std::vector<PathSegment>>>> at(path.segments.size());
+    std::set<std::pair<int, int>> leaving;   // (source sub-cell, first step) of the ways taken
+    bool any = false;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int v = queue[head];
+      const int col = v % sc, row = v / sc;
+      const std::size_t m = megaIndex(col / 2, row / 2);
+      const bool target = gaps ? gap_[static_cast<std::size_t>(v)] != 0
+                               : !inTree_[m] && !failed[m] && cells_.mega(col / 2, row / 2) == CellState::kFree;
+      if (parent[static_cast<std::size_t>(v)] >= 0 && target) any = visitRoom(path, v, parent, sources, sourceOf, at, leaving, failed, gaps) || any;
+      for (int d = 0; d < 4; ++d) {
+        const int c = col + graph::kDx[d], r = row + graph::kDy[d];
+        if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || parent[index(c, r)] != -2) continue;
+        parent[index(c, r)] = v;
+        queue.push_back(static_cast<int>(index(c, r)));
+      }
+    }
+    if (!any) return false;
+    std::vector<PathSegment> out;
+    out.reserve(path.segments.size());
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+      const PathSegment g = path.segments[k];
+      if (at[k].empty()) {
+        out.push_back(g);
+        continue;
+      }
+      auto along = [&](PointD p) { return std::abs(p.x - g.from.x) + std::abs(p.y - g.from.y); };
+      std::stable_sort(at[k].begin(), at[k].end(), [&](const auto& x, const auto& y) { return along(x.first) < along(y.first); });
+      PointD from = g.from;
+      for (const auto& [p, pieces] : at[k]) {
+        // the segment's parts before and after the point, as they will be, exactly clear (else
+        // the excursion is left out: its room or gaps stay uncovered, the path stays valid)
+        const bool before = p.x == from.x && p.y == from.y, after = p.x == g.to.x && p.y == g.to.y;
+        if ((!before && !clear(PathSegment::line(from, p))) || (!after && !clear(PathSegment::line(p, g.to)))) {
+          ++excursionsDropped_;
+          continue;
+        }
+        if (!before) out.push_back(PathSegment::line(from, p));
+        out.insert(out.end(), pieces.begin(), pieces.end());
+        from = p;
+      }
+      if (!(from.x == g.to.x && from.y == g.to.y)) out.push_back(PathSegment::line(from, g.to));
+    }
+    path.segments.swap(out);
+    return true;
+  }
+
+private:
+  bool visitRoom(const Path& path, int e, const std::vector<int>& parent, const std::vector<Source>& sources, const std::vector<std::int64_t>& sourceOf,
+                 std::vector<std::vector<std::pair<PointD, std::vector<PathSegment>>>>& at, std::set<std::pair<int, int>>& leaving,
+                 std::vector<std::uint8_t>& failed, bool gaps) {
+    const int sc = cells_.subCols();
+    std::vector<int> chain{e};   // e back to a source
+    while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
+    const Source& src = sources[static_cast<std::size_t>(sourceOf[static_cast<std::size_t>(chain.back())])];
+    const std::pair<int, int> leave{chain.back(), chain[chain.size() - 2]};
+    if (leaving.count(leave)) return false;   // the next pass
+    const CellIndex ec{e % sc, e / sc};
+    const std::size_t room = megaIndex(ec.col / 2, ec.row / 2);
+    std::size_t& left = gaps ? gapsLeft_ : roomsLeft_;
+    std::vector<CellIndex> pw = gaps ? gapWalk(e) : pocketWalk_(ec);
+    if (pw.empty() || !(pw.front() == ec) || !(pw.back() == ec) || (!gaps && pw.size() < 3)) {
+      failed[room] = !gaps;
+      ++left;
+      return false;
+    }
+    // the way there: centres from the source's point to e's, straight runs merged
+    std::vector<PointD> way{src.at};
+    for (std::size_t i = chain.size() - 1; i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
+    std::vector<PathSegment> there;
+    for (std::size_t i = 1; i < way.size(); ++i) {
+      if (!there.empty()) {
+        PathSegment& last = there.back();
+        const bool sameX = last.from.x == last.to.x && last.to.x == way[i].x, sameY = last.from.y == last.to.y && last.to.y == way[i].y;
+        if (sameX || sameY) {
+          last.to = way[i];
+          continue;
+        }
+      }
+      there.push_back(PathSegment::line(way[i - 1], way[i]));
+    }
+    std::vector<std::size_t> marked;
+    if (!gaps)
+      for (const CellIndex& c : pw)
+        if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
+    PlacedWalk placed;
+    if (pw.size() > 1) {
+      placed = placeWalk(ctx_, pw, cells_.subCenter(ec.col, ec.row), false);
+    } else {   // one gap: there and back
+      placed.path.segments.push_back(PathSegment::line(way.back(), way.back()));
+    }
+    bool ok = placed.unsafeCells.empty() && placed.startClear && !placed.path.segments.empty() && !there.empty();
+    // the room's tour starts at e's centre and ends there as the walk places it (rounded towards
+    // its mega-cell's centre, possibly an ulp away): the way there ends where the tour starts, the
+    // way back starts where it ends, with no joint between
+    std::vector<PathSegment> back;
+    if (ok) {
+      // the move from e's exact centre to its placed one (an ulp, or nothing) is left out
+      std::vector<PathSegment>& ps = placed.path.segments;
+      while (ps.size() > 1 && ps.front().kind == PathSegment::Kind::kLine && ps.front().length() < 1e-9 * cells_.subSizeD()) ps.erase(ps.begin());
+      there.back().to = placed.path.segments.front().from;
+      for (std::size_t i = there.size(); i-- > 0;) back.push_back(PathSegment::line(there[i].to, there[i].from));
+      back.front().from = placed.path.segments.back().to;
+    }
+    for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
+    if (ok) ok = clear(back.front());
+    if (ok) {  // the path's piece split where the way leaves it
+      const PathSegment& g = path.segments[src.segment];
+      ok = clear(PathSegment::line(g.from, src.at)) && clear(PathSegment::line(src.at, g.to));
+    }
+    if (!ok) {
+      for (std::size_t m : marked) inTree_[m] = 0;
+      failed[room] = !gaps;
+      ++left;
+      return false;
+    }
+    if (!gaps) tour(pw, placed.path);   // the room's own sweeps (and pockets)
+    leaving.insert(leave);
+    std::vector<PathSegment> pieces = there;
+    if (pw.size() > 1) pieces.insert(pieces.end(), placed.path.segments.begin(), placed.path.segments.end());
+    pieces.insert(pieces.end(), back.begin(), back.end());
+    at[src.segment].emplace_back(src.at, std::move(pieces));
+    ++(gaps ? gapsJoined_ : roomsJoined_);
+    return true;
+  }
+
   const PlanningContext& ctx_;
   const CellGrid& cells_;
   ObstacleSensor* sensor_;
@@ -597,6 +849,9 @@ private:
   std::size_t inserted_ = 0, rejected_ = 0, unreached_ = 0, shared_ = 0, arcs_ = 0, pocketsJoined_ = 0, pocketsLeft_ = 0;
   std::size_t traced_ = 0;  ///< sweeps (of any outcome) made by the direct trace
   std::size_t skipped_ = 0; ///< detours left out: what they would sweep was swept already
+  std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
+  std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
+  std::size_t excursionsDropped_ = 0;
 };
 
 /// Segments by bucket (side 2r), for "does anything pass within r of this point" in doubles.
@@ -808,6 +1063,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   }
   Refiner refiner(ctx, params, check, std::move(pocketWalk), sensor.get(), sweeper.get());
   refiner.tour(walk, path);
+  if (!online && params.text("rooms") == "travel") refiner.travel(path, params.text("gaps") == "visit");
   refiner.report(plan);
   if (sensor) plan.statistics["obstacle_sensor_queries"] = static_cast<double>(sensor->queries());
   cutTips(ctx, check, path, plan);
@@ -833,6 +1089,12 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
   for (ParamSpec& e : p)
     if (e.name == "tree") e.defaultValue = "kruskal_straight";  // long straight branches: fewer turns (docs/smooth-stc.md)
   for (const ParamSpec& e : entryParam()) p.push_back(e);
+  p.push_back({"rooms", ParamType::kChoice, "travel", "travel|leave",
+               "free mega-cells that no tour or sweep reaches (behind a door narrower than a mega-cell): travelled to "
+               "along free sub-cells and toured with their own trees (travel), or left (leave, the paper's)"});
+  p.push_back({"gaps", ParamType::kChoice, "visit", "visit|leave",
+               "with rooms=travel, free sub-cells the path still leaves uncovered (between obstacles closer than a "
+               "mega-cell): travelled to and toured depth-first, each group from its nearest sub-cell (visit), or left"});
   p.push_back({"detours", ParamType::kChoice, "needed", "needed|every",
                "sweeps that leave the tour and come back (two corners, 180 degrees more turning): only where they sweep "
                "at least r^2 that the tour and the other sweeps do not (needed), or every one (the paper's)"});

@@ -145,6 +145,32 @@ TEST(SmoothStc, NeededDetoursTurnLessAndCoverAlmostAsMuch) {
   }
 }
 
+// rooms=travel and gaps=visit: free mega-cells that no tour or sweep reaches and free sub-cells
+// left uncovered are reached along free sub-cells. A large robot among obstacles about a mega-cell
+// in size (r = 0.4 on 16 m, 20 obstacles) is where they matter: the plans stay exactly valid and
+// deterministic, they reach rooms and gaps, and cover more than without them.
+TEST(SmoothStc, TravelsToRoomsAndGapsThatNoSweepReaches) {
+  double withTravel = 0, without = 0;
+  double rooms = 0, gaps = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 16, 20), Rational(2, 5));
+    const Plan travel = planners::runPlanner("smooth_stc", ctx, {});
+    const Plan leave = planners::runPlanner("smooth_stc", ctx, {{"rooms", "leave"}});
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, travel)) << "seed " << seed;
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, leave)) << "seed " << seed;
+    EXPECT_EQ(leave.statistics.at("rooms_joined") + leave.statistics.at("gaps_visited"), 0) << "seed " << seed;
+    rooms += travel.statistics.at("rooms_joined");
+    gaps += travel.statistics.at("gaps_visited");
+    const double a = coverable(ctx, travel), b = coverable(ctx, leave);
+    EXPECT_GE(a, b - 1e-3) << "seed " << seed;
+    withTravel += a, without += b;
+    EXPECT_EQ(testing_helpers::pathJsonOf(travel), testing_helpers::pathJsonOf(planners::runPlanner("smooth_stc", ctx, {})));
+  }
+  EXPECT_GT(rooms, 0);
+  EXPECT_GT(gaps, 0);
+  EXPECT_GT(withTravel - without, 0.05);   // over the three worlds
+}
+
 // The online robot sweeps from what its obstacle sensor has reported (ObstacleSensor, which throws
 // on any question about a mega-cell that is not the robot's or a neighbour of it: running is the
 // proof); a sweep needs only the obstacles near it, and those are the same rings, with the same
@@ -155,7 +181,7 @@ TEST(SmoothStc, OnlineEqualsOfflineWithThePapersTree) {
     const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 10, 5), Rational(1, 4));
     // the offline defaults' straight tree and detours=needed are not the online robot's (it cannot
     // know the whole tour): the paper's tree and every detour
-    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}};
+    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
     const Plan offline = planners::runPlanner("smooth_stc", ctx, paperTree);
     const Plan online = planners::runPlanner("smooth_stc_online", ctx, {});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, online));
@@ -229,9 +255,19 @@ TEST(SmoothStc, JoinsAPocketThatPartialMegaCellsCutOff) {
   }
   w.regions.push_back(reg);
   const auto ctx = testing_helpers::contextFor(w, Rational(1, 4), Point{Rational(1, 4), Rational(1, 4)});
-  const Plan joined = planners::runPlanner("smooth_stc", ctx, {});
-  const Plan left = planners::runPlanner("smooth_stc", ctx, {{"pockets", "leave"}});
-  const Plan paper = planners::runPlanner("smooth_stc", ctx, {{"pockets", "leave"}, {"reach", "cell"}, {"entries", "parent"}});
+  // the paper's tree, every detour and no travel to rooms (which would reach the pocket as well):
+  // the pocket joined by the sweep is what is measured, beside the online robot's
+  const std::map<std::string, std::string> base{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
+  auto with = [&](std::map<std::string, std::string> extra) {
+    extra.insert(base.begin(), base.end());
+    return extra;
+  };
+  const Plan joined = planners::runPlanner("smooth_stc", ctx, base);
+  const Plan left = planners::runPlanner("smooth_stc", ctx, with({{"pockets", "leave"}}));
+  const Plan paper = planners::runPlanner("smooth_stc", ctx, with({{"pockets", "leave"}, {"reach", "cell"}, {"entries", "parent"}}));
+  const Plan defaults = planners::runPlanner("smooth_stc", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, defaults));
+  EXPECT_GT(coverable(ctx, defaults), 0.97);
   const Plan online = planners::runPlanner("smooth_stc_online", ctx, {});
   for (const Plan* p : {&joined, &left, &paper, &online}) ASSERT_TRUE(testing_helpers::planIsValid(ctx, *p));
   EXPECT_GE(joined.statistics.at("pockets_joined"), 1);
