@@ -21,16 +21,20 @@ RunResult runOnce(const planners::PlanningContext& ctx, const std::string& plann
     if (onPhase) onPhase(name);
   };
   RunResult r;
+  // the planner's own processors first (Planner::postProcessing: smooth_stc's fillet), then the user's
+  std::vector<optimise::PostStep> steps;
+  for (const std::string& text : planners::defaultPostProcessing(planner, params)) steps.push_back(optimise::parsePostStep(text));
+  steps.insert(steps.end(), post.begin(), post.end());
   phase("planning");
   const auto t0 = std::chrono::steady_clock::now();
   r.plan = planners::runPlanner(planner, ctx, params, timeLimit);
   auto since = [](std::chrono::steady_clock::time_point t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   r.planSeconds = since(t0);
   r.totalSeconds = r.planSeconds + ctx.cellSeconds;
-  if (succeeded(r.plan.status) && !post.empty()) {
+  if (succeeded(r.plan.status) && !steps.empty()) {
     phase("post-processing");
     const auto tp = std::chrono::steady_clock::now();
-    r.plan = optimise::postProcess(ctx.problem, std::move(r.plan), post);
+    r.plan = optimise::postProcess(ctx.problem, std::move(r.plan), steps);
     r.postSeconds = since(tp);
   }
   if (succeeded(r.plan.status)) {

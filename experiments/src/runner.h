@@ -58,7 +58,8 @@ private:
 };
 
 /// `onPhase`, when set, is called as each phase starts ("planning", "post-processing", "validating",
-/// "metrics"). `post`: path processors run on the plan before it is validated (optimise::postProcess).
+/// "metrics"). `post`: path processors run on the plan before it is validated (optimise::postProcess),
+/// after those the planner names itself (planners::defaultPostProcessing: smooth_stc's fillet).
 RunResult runOnce(const planners::PlanningContext& context, const std::string& planner,
                   const std::map<std::string, std::string>& params, double timeLimit = 0,
                   const std::function<void(const std::string&)>& onPhase = {}, const MetricOptions& metricOptions = defaultMetricOptions(),

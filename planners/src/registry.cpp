@@ -57,6 +57,11 @@ Plan runPlanner(const std::string& name, const PlanningContext& context, const s
   return plan;
 }
 
+std::vector<std::string> defaultPostProcessing(const std::string& name, const std::map<std::string, std::string>& params) {
+  auto planner = Registry::instance().create(name);
+  return planner->postProcessing(ParamSet(planner->params(), params, name));
+}
+
 }  // namespace coverkit::planners
 
 namespace coverkit::planners {

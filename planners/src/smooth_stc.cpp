@@ -45,6 +45,13 @@
 //    sweeps and the detours taken before it (in tour order) do not (estimated in doubles from
 //    samples; it decides which sweeps are made, never whether one is safe). Offline only: the
 //    decision looks at the whole tour, which an online robot does not know yet.
+//  - Rounded by default (`post=fillet`; `post=none` keeps the corners): the paper draws smooth
+//    turns, and a corner costs a real robot a stop and a turn on the spot. The plan goes on through
+//    the `fillet` path processor (optimise/, docs/post-processing.md) in the pipeline rather than
+//    inside the planner, so the rounding is the one every planner can have, with its exact clearance
+//    checks and its coverage guard, and the plan is validated exactly after it. Offline only: the
+//    guard asks what the rest of the path sweeps. A fillet turns as much as its corner, so it
+//    removes corners and reversals, not turning.
 //  - Exactness: the sweep runs on the C-space of radius r + ε + δ. ε (a power of two just above
 //    the C-space's approximation bound, 1e-6 × the map's extent) keeps the sweep outside the
 //    conservative C-obstacles of radius r as well, whose irrational edges are replaced by pieces up
@@ -75,11 +82,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <optional>
 #include <set>
-#include <unordered_map>
 
 namespace coverkit::planners {
 
@@ -184,14 +191,23 @@ bool withinReach(const PathSegment& s, PointD p, double limit) {
   return std::min(std::hypot(p.x - s.from.x, p.y - s.from.y), std::hypot(p.x - s.to.x, p.y - s.to.y)) <= limit;
 }
 
-/// The pieces of a path by bucket (side 2r), growing as pieces are added, for "does some piece
-/// pass within r of this point" in doubles. It decides only which sweeps are worth making, never
-/// safety; only `find` is used on the map, so the answers do not depend on its order.
+/// The pieces of a path by bucket (side 2r, coarser where the box would need more than about 16
+/// million), growing as pieces are added (a list per bucket, linked through one array), for "does
+/// some piece pass within r of this point" in doubles. It decides only which sweeps are worth
+/// making and where to go, never safety. Points outside the box are covered by nothing.
 class CoverIndex {
 public:
-  explicit CoverIndex(double r) : r_(r), cell_(2 * r) {}
+  CoverIndex(double r, BoxD box) : r_(r) {
+    const double reach = r * (1 + 1e-6);
+    box_ = {box.xmin - reach, box.ymin - reach, box.xmax + reach, box.ymax + reach};
+    const double w = box_.xmax - box_.xmin, h = box_.ymax - box_.ymin;
+    constexpr double kMaxCells = 16.0 * 1024 * 1024;
+    cell_ = std::max({2 * r, std::sqrt(w * h / kMaxCells), std::max(w, h) / kMaxCells, 1e-300});
+    nx_ = static_cast<long>(w / cell_) + 1, ny_ = static_cast<long>(h / cell_) + 1;
+    head_.assign(static_cast<std::size_t>(nx_ * ny_), -1);
+  }
   void add(const PathSegment& s) {
-    const std::size_t i = pieces_.size();
+    const auto i = static_cast<std::int32_t>(pieces_.size());
     pieces_.push_back(s);
     BoxD b{std::min(s.from.x, s.to.x), std::min(s.from.y, s.to.y), std::max(s.from.x, s.to.x), std::max(s.from.y, s.to.y)};
     if (s.kind == PathSegment::Kind::kArc) {
@@ -199,15 +215,19 @@ public:
       b = {s.center.x - rho, s.center.y - rho, s.center.x + rho, s.center.y + rho};
     }
     const double reach = r_ * (1 + 1e-6);
-    for (long by = key(b.ymin - reach); by <= key(b.ymax + reach); ++by)
-      for (long bx = key(b.xmin - reach); bx <= key(b.xmax + reach); ++bx) cells_[pack(bx, by)].push_back(i);
+    for (long by = key(b.ymin - reach, box_.ymin, ny_); by <= key(b.ymax + reach, box_.ymin, ny_); ++by)
+      for (long bx = key(b.xmin - reach, box_.xmin, nx_); bx <= key(b.xmax + reach, box_.xmin, nx_); ++bx) {
+        std::int32_t& h = head_[static_cast<std::size_t>(by * nx_ + bx)];
+        entries_.push_back({i, h});
+        h = static_cast<std::int32_t>(entries_.size() - 1);
+      }
   }
   bool covered(PointD p) const {
-    const auto it = cells_.find(pack(key(p.x), key(p.y)));
-    if (it == cells_.end()) return false;
+    if (!(p.x >= box_.xmin && p.y >= box_.ymin && p.x <= box_.xmax && p.y <= box_.ymax)) return false;
     const double limit = r_ * (1 + 1e-9);
-    for (std::size_t i : it->second)
-      if (withinReach(pieces_[i], p, limit)) return true;
+    for (std::int32_t e = head_[static_cast<std::size_t>(key(p.y, box_.ymin, ny_) * nx_ + key(p.x, box_.xmin, nx_))]; e >= 0;
+         e = entries_[static_cast<std::size_t>(e)].next)
+      if (withinReach(pieces_[static_cast<std::size_t>(entries_[static_cast<std::size_t>(e)].piece)], p, limit)) return true;
     return false;
   }
   /// The area within r of `pieces` that no piece added so far reaches, estimated from samples every
@@ -231,13 +251,18 @@ public:
   }
 
 private:
-  long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
-  static std::uint64_t pack(long x, long y) {
-    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32 | static_cast<std::uint32_t>(y);
+  struct Entry {
+    std::int32_t piece, next;
+  };
+  long key(double v, double origin, long n) const {
+    return std::min(n - 1, std::max(0L, static_cast<long>((v - origin) / cell_)));
   }
-  double r_, cell_;
+  double r_, cell_ = 1;
+  BoxD box_;
+  long nx_ = 1, ny_ = 1;
   std::vector<PathSegment> pieces_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+  std::vector<std::int32_t> head_;
+  std::vector<Entry> entries_;
 };
 
 /// The tour of a pocket's tree from a sub-cell (closed), or empty.
@@ -266,6 +291,35 @@ public:
     insert(walk, open, sweeps, innerClear, path);
   }
 
+  /// tour() for several walks at once, offline: the sweeps of all of them made in one batch (one
+  /// set of buckets of the obstacles' pieces, not one per walk), then each walk's put into its path
+  /// in order.
+  void tourMany(const std::vector<std::pair<const std::vector<CellIndex>*, Path*>>& tours) {
+    if (sensor_ || tours.size() < 2) {
+      for (const auto& [walk, path] : tours) tour(*walk, *path);
+      return;
+    }
+    std::vector<std::vector<Opening>> open;
+    std::vector<CSpace::SweepRequest> requests;
+    for (const auto& [walk, path] : tours) {
+      for (const CellIndex& c : *walk) inTree_[megaIndex(c.col / 2, c.row / 2)] = 1;
+      open.push_back(openings(*walk));
+      for (const Opening& o : open.back()) requests.push_back(requestOf(cells_, *walk, o));
+    }
+    const Rational r = ctx_.problem.robots.at(0).radius;
+    const std::vector<CSpace::Sweep> all =
+        CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads, trace_);
+    const std::vector<std::uint8_t> inner = checkInner(all);
+    std::size_t from = 0;
+    for (std::size_t i = 0; i < tours.size(); ++i) {
+      const std::size_t n = open[i].size();
+      const std::vector<CSpace::Sweep> sweeps(all.begin() + static_cast<std::ptrdiff_t>(from), all.begin() + static_cast<std::ptrdiff_t>(from + n));
+      const std::vector<std::uint8_t> innerClear(inner.begin() + static_cast<std::ptrdiff_t>(from), inner.begin() + static_cast<std::ptrdiff_t>(from + n));
+      insert(*tours[i].first, open[i], sweeps, innerClear, *tours[i].second);
+      from += n;
+    }
+  }
+
   void report(Plan& plan) const {
     std::size_t leaves = 0;
     for (auto v : swept_) leaves += v;
@@ -284,6 +338,7 @@ public:
     plan.statistics["gaps_visited"] = static_cast<double>(gapsJoined_);
     plan.statistics["gaps_left"] = static_cast<double>(gapsLeft_);
     plan.statistics["excursions_dropped"] = static_cast<double>(excursionsDropped_);
+    plan.statistics["travel_passes"] = static_cast<double>(passes_);
   }
 
 private:
@@ -397,6 +452,39 @@ private:
 
   bool clear(const PathSegment& p) { return pieceClear(check_, p); }
 
+  /// Lines through the points, a straight run (on one axis) one line.
+  static std::vector<PathSegment> mergedLines(const std::vector<PointD>& way) {
+    std::vector<PathSegment> out;
+    for (std::size_t i = 1; i < way.size(); ++i) {
+      if (!out.empty()) {
+        PathSegment& last = out.back();
+        const bool sameX = last.from.x == last.to.x && last.to.x == way[i].x, sameY = last.from.y == last.to.y && last.to.y == way[i].y;
+        const bool onward = (last.to.x - last.from.x) * (way[i].x - last.to.x) + (last.to.y - last.from.y) * (way[i].y - last.to.y) > 0;
+        if ((sameX || sameY) && onward) {
+          last.to = way[i];
+          continue;
+        }
+      }
+      out.push_back(PathSegment::line(way[i - 1], way[i]));
+    }
+    return out;
+  }
+
+  /// The walk's sub-cell centres as lines.
+  std::vector<PathSegment> linesThrough(const std::vector<CellIndex>& walk) const {
+    std::vector<PointD> way;
+    way.reserve(walk.size());
+    for (const CellIndex& c : walk) way.push_back(cells_.subCenterD(c.col, c.row));
+    return mergedLines(way);
+  }
+
+  /// The cell grid's box, in doubles.
+  BoxD mapBox() const {
+    const PointD a = cells_.subCenterD(0, 0), b = cells_.subCenterD(cells_.subCols() - 1, cells_.subRows() - 1);
+    const double h = cells_.subSizeD() / 2;
+    return {a.x - h, a.y - h, b.x + h, b.y + h};
+  }
+
   static int dirOf(CellIndex a, CellIndex b) {
     for (int d = 0; d < 4; ++d)
       if (b.col - a.col == graph::kDx[d] && b.row - a.row == graph::kDy[d]) return d;
@@ -414,7 +502,7 @@ private:
     std::vector<std::uint8_t> take(open.size(), 1);
     if (!needed_) return take;
     const double r = ctx_.problem.robots.at(0).radius.get_d();
-    CoverIndex index(r);
+    CoverIndex index(r, mapBox());
     for (const PathSegment& p : path.segments) index.add(p);
     std::vector<std::size_t> detours;
     for (std::size_t j = 0; j < open.size(); ++j) {
@@ -601,6 +689,17 @@ private:
   /// room toured is in a tree, so it is entered once. Which sub-cells start the search, and the
   /// order, follow the path: the plan is the same every time.
 public:
+  /// An excursion decided in a pass: the way there and back, and the room's walk and tour (whose
+  /// sweeps are made for all the pass's rooms at once).
+  struct Excursion {
+    std::size_t segment;
+    PointD at;
+    std::vector<PathSegment> there, back;
+    std::vector<CellIndex> walk;
+    Path tour;
+    bool room;
+  };
+
   struct Source {
     std::size_t segment;
     PointD at;
@@ -608,10 +707,15 @@ public:
 
   void travel(Path& path, bool gaps) {
     std::vector<std::uint8_t> failed(cells_.megaCount(), 0);
-    while (travelPass(path, failed, false)) {
+    bool rooms = false;   // a free mega-cell outside every tree: else no search
+    for (int row = 0; row < cells_.megaRows() && !rooms; ++row)
+      for (int col = 0; col < cells_.megaCols() && !rooms; ++col)
+        rooms = cells_.mega(col, row) == CellState::kFree && !inTree_[megaIndex(col, row)];
+    while (rooms && travelPass(path, failed, false)) {
     }
     if (!gaps) return;
     markGaps(path);
+    if (std::find(gap_.begin(), gap_.end(), std::uint8_t{1}) == gap_.end()) return;
     while (travelPass(path, failed, true)) {
     }
   }
@@ -625,12 +729,14 @@ public:
   /// occupied mega-cell; a dead end one sub-cell wide is left the way it was entered.
   void markGaps(const Path& path) {
     const double r = ctx_.problem.robots.at(0).radius.get_d();
-    CoverIndex index(r);
+    CoverIndex index(r, mapBox());
     for (const PathSegment& p : path.segments) index.add(p);
     gap_.assign(cells_.subCount(), 0);
     for (int row = 0; row < cells_.subRows(); ++row)
       for (int col = 0; col < cells_.subCols(); ++col) {
-        if (cells_.sub(col, row) != CellState::kFree) continue;
+        // a tree's mega-cell is toured through every one of its sub-cells' centres
+        if (cells_.sub(col, row) != CellState::kFree || (cells_.mega(col / 2, row / 2) == CellState::kFree && inTree_[megaIndex(col / 2, row / 2)]))
+          continue;
         const PointD c = cells_.subCenterD(col, row);
         int missed = 0;
         for (const PointD& d : {PointD{0, 0}, PointD{r / 2, 0}, PointD{-r / 2, 0}, PointD{0, r / 2}, PointD{0, -r / 2}})
@@ -713,6 +819,7 @@ public:
     // excursions by segment: (where on it, the pieces)
     std::vector<std::vector<std::pair<PointD, std::vector<PathSegment>>>> at(path.segments.size());
     std::set<std::pair<int, int>> leaving;   // (source sub-cell, first step) of the ways taken
+    std::vector<Excursion> pending;
     bool any = false;
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const int v = queue[head];
@@ -720,7 +827,7 @@ public:
       const std::size_t m = megaIndex(col / 2, row / 2);
       const bool target = gaps ? gap_[static_cast<std::size_t>(v)] != 0
                                : !inTree_[m] && !failed[m] && cells_.mega(col / 2, row / 2) == CellState::kFree;
-      if (parent[static_cast<std::size_t>(v)] >= 0 && target) any = visitRoom(path, v, parent, sources, sourceOf, at, leaving, failed, gaps) || any;
+      if (parent[static_cast<std::size_t>(v)] >= 0 && target) any = visitRoom(path, v, parent, sources, sourceOf, pending, leaving, failed, gaps) || any;
       for (int d = 0; d < 4; ++d) {
         const int c = col + graph::kDx[d], r = row + graph::kDy[d];
         if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || parent[index(c, r)] != -2) continue;
@@ -729,6 +836,17 @@ public:
       }
     }
     if (!any) return false;
+    ++passes_;
+    std::vector<std::pair<const std::vector<CellIndex>*, Path*>> rooms;
+    for (Excursion& x : pending)
+      if (x.room) rooms.emplace_back(&x.walk, &x.tour);
+    tourMany(rooms);   // the rooms' own sweeps (and pockets)
+    for (Excursion& x : pending) {
+      std::vector<PathSegment> pieces = std::move(x.there);
+      pieces.insert(pieces.end(), x.tour.segments.begin(), x.tour.segments.end());
+      pieces.insert(pieces.end(), x.back.begin(), x.back.end());
+      at[x.segment].emplace_back(x.at, std::move(pieces));
+    }
     std::vector<PathSegment> out;
     out.reserve(path.segments.size());
     for (std::size_t k = 0; k < path.segments.size(); ++k) {
@@ -760,8 +878,8 @@ public:
 
 private:
   bool visitRoom(const Path& path, int e, const std::vector<int>& parent, const std::vector<Source>& sources, const std::vector<std::int64_t>& sourceOf,
-                 std::vector<std::vector<std::pair<PointD, std::vector<PathSegment>>>>& at, std::set<std::pair<int, int>>& leaving,
-                 std::vector<std::uint8_t>& failed, bool gaps) {
+                 std::vector<Excursion>& pending, std::set<std::pair<int, int>>& leaving, std::vector<std::uint8_t>& failed,
+                 bool gaps) {
     const int sc = cells_.subCols();
     std::vector<int> chain{e};   // e back to a source
     while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
@@ -780,27 +898,19 @@ private:
     // the way there: centres from the source's point to e's, straight runs merged
     std::vector<PointD> way{src.at};
     for (std::size_t i = chain.size() - 1; i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
-    std::vector<PathSegment> there;
-    for (std::size_t i = 1; i < way.size(); ++i) {
-      if (!there.empty()) {
-        PathSegment& last = there.back();
-        const bool sameX = last.from.x == last.to.x && last.to.x == way[i].x, sameY = last.from.y == last.to.y && last.to.y == way[i].y;
-        if (sameX || sameY) {
-          last.to = way[i];
-          continue;
-        }
-      }
-      there.push_back(PathSegment::line(way[i - 1], way[i]));
-    }
+    std::vector<PathSegment> there = mergedLines(way);
     std::vector<std::size_t> marked;
     if (!gaps)
       for (const CellIndex& c : pw)
         if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
     PlacedWalk placed;
-    if (pw.size() > 1) {
+    if (!gaps) {
       placed = placeWalk(ctx_, pw, cells_.subCenter(ec.col, ec.row), false);
-    } else {   // one gap: there and back
+    } else if (pw.size() == 1) {   // one gap: there and back
       placed.path.segments.push_back(PathSegment::line(way.back(), way.back()));
+    } else {   // centre to centre, straight runs merged, each line checked exactly below
+      placed.path.segments = linesThrough(pw);
+      for (const PathSegment& g : placed.path.segments) placed.startClear = placed.startClear && clear(g);
     }
     bool ok = placed.unsafeCells.empty() && placed.startClear && !placed.path.segments.empty() && !there.empty();
     // the room's tour starts at e's centre and ends there as the walk places it (rounded towards
@@ -827,12 +937,9 @@ private:
       ++left;
       return false;
     }
-    if (!gaps) tour(pw, placed.path);   // the room's own sweeps (and pockets)
     leaving.insert(leave);
-    std::vector<PathSegment> pieces = there;
-    if (pw.size() > 1) pieces.insert(pieces.end(), placed.path.segments.begin(), placed.path.segments.end());
-    pieces.insert(pieces.end(), back.begin(), back.end());
-    at[src.segment].emplace_back(src.at, std::move(pieces));
+    if (pw.size() == 1) placed.path.segments.clear();
+    pending.push_back({src.segment, src.at, std::move(there), std::move(back), std::move(pw), std::move(placed.path), !gaps});
     ++(gaps ? gapsJoined_ : roomsJoined_);
     return true;
   }
@@ -851,7 +958,7 @@ private:
   std::size_t skipped_ = 0; ///< detours left out: what they would sweep was swept already
   std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
   std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
-  std::size_t excursionsDropped_ = 0;
+  std::size_t excursionsDropped_ = 0, passes_ = 0;
 };
 
 /// Segments by bucket (side 2r), for "does anything pass within r of this point" in doubles.
@@ -1063,7 +1170,11 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   }
   Refiner refiner(ctx, params, check, std::move(pocketWalk), sensor.get(), sweeper.get());
   refiner.tour(walk, path);
-  if (!online && params.text("rooms") == "travel") refiner.travel(path, params.text("gaps") == "visit");
+  if (!online && params.text("rooms") == "travel") {
+    const auto t2 = Clock::now();
+    refiner.travel(path, params.text("gaps") == "visit");
+    plan.timings.emplace_back("rooms and gaps", std::chrono::duration<double>(Clock::now() - t2).count());
+  }
   refiner.report(plan);
   if (sensor) plan.statistics["obstacle_sensor_queries"] = static_cast<double>(sensor->queries());
   cutTips(ctx, check, path, plan);
@@ -1098,7 +1209,16 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
   p.push_back({"detours", ParamType::kChoice, "needed", "needed|every",
                "sweeps that leave the tour and come back (two corners, 180 degrees more turning): only where they sweep "
                "at least r^2 that the tour and the other sweeps do not (needed), or every one (the paper's)"});
+  p.push_back({"post", ParamType::kChoice, "fillet", "fillet|none",
+               "what follows the plan in the pipeline (coverkit plan, experiments, Python): the fillet processor, corners "
+               "to tangent arcs where exactly clear and what they swept stays swept (fillet), or nothing (none, the paper's "
+               "corners)"});
   return p;
+}
+
+std::vector<std::string> SmoothStcPlanner::postProcessing(const ParamSet& params) const {
+  if (params.text("post") == "fillet") return {"fillet"};
+  return {};
 }
 
 Capabilities SmoothStcPlanner::capabilities() const {

@@ -127,6 +127,11 @@ public:
   virtual Capabilities capabilities() const = 0;
   /// Plans. Bad parameters were rejected before (ParamSet); planning outcomes are statuses.
   virtual Plan plan(const PlanningContext& context, const ParamSet& params, const TerminationCondition& stop) = 0;
+  /// The path processors (optimise/, each "NAME" or "NAME:KEY=VALUE;...") that follow this planner
+  /// by default with these parameters. The pipeline (experiments::runOnce: `coverkit plan`, the
+  /// experiment engine, Python) runs them, then any the user asks for, and validates the result
+  /// exactly again; plan() itself returns the planner's own path. None by default.
+  virtual std::vector<std::string> postProcessing(const ParamSet& /*params*/) const { return {}; }
 };
 
 }  // namespace coverkit::planners

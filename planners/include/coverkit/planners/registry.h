@@ -68,6 +68,10 @@ public:
 Plan runPlanner(const std::string& name, const PlanningContext& context, const std::map<std::string, std::string>& params,
                 double timeLimitSeconds = 0);
 
+/// The path processors that follow planner `name` by default with these parameters
+/// (Planner::postProcessing); InputError on an unknown planner or bad parameters.
+std::vector<std::string> defaultPostProcessing(const std::string& name, const std::map<std::string, std::string>& params);
+
 /// Resolves parameters and runs the decomposition `name` on the problem's first robot.
 Decomposed runDecomposition(const std::string& name, const Problem& problem, const std::map<std::string, std::string>& params);
 

@@ -17,6 +17,8 @@ public:
   std::string description() const override;
   std::vector<ParamSpec> params() const override;
   Capabilities capabilities() const override;
+  /// `post=fillet` (the default): the fillet processor, its coverage guard on.
+  std::vector<std::string> postProcessing(const ParamSet& params) const override;
 
 protected:
   void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
