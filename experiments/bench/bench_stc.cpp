@@ -5,6 +5,7 @@
 #include <coverkit/planners/registry.h>
 
 #include <chrono>
+#include <map>
 #include <cmath>
 
 using namespace coverkit;
@@ -69,7 +70,10 @@ static void BM_FullStc(benchmark::State& state) {
 BENCHMARK(BM_FullStc)->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 // Smooth-STC against STC on the same maps, 10^3 … 10^6 mega-cells (4·10^3 … 4·10^6 sub-cells):
-// time of each and their ratio per map (counters), with Smooth-STC's phases.
+// time of each and their ratio per map (counters), with Smooth-STC's phases. Smooth-STC plans with
+// the paper's tree and every detour, rooms left (the online planner's plan, and the configuration
+// docs/performance.md's history was measured in); with the last argument 1 it plans with its
+// defaults (straight tree, needed detours, rooms and gaps; the rounding is the pipeline's, not timed).
 static void BM_SmoothStcVsStc(benchmark::State& state) {
   int side = 0;
   planners::PlanningContext ctx = gridContext(4 * state.range(0), side);
@@ -77,7 +81,8 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
   double smoothSeconds = 0, stcSeconds = 0;
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
-    Plan smooth = planners::runPlanner("smooth_stc", ctx, {});
+    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
+    Plan smooth = planners::runPlanner("smooth_stc", ctx, state.range(2) ? std::map<std::string, std::string>{} : paperTree);
     auto t1 = std::chrono::steady_clock::now();
     Plan stc = planners::runPlanner("stc", ctx, {});
     auto t2 = std::chrono::steady_clock::now();
@@ -87,6 +92,9 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
     state.counters["sweeps"] = smooth.statistics["sweeps"];
     state.counters["traced"] = smooth.statistics["sweeps_traced"];
     state.counters["pockets"] = smooth.statistics["pockets_joined"];
+    state.counters["travel_passes"] = smooth.statistics["travel_passes"];
+    state.counters["rooms"] = smooth.statistics["rooms_joined"];
+    state.counters["gaps"] = smooth.statistics["gaps_visited"];
     benchmark::DoNotOptimize(smooth);
     benchmark::DoNotOptimize(stc);
   }
@@ -95,9 +103,10 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
   state.counters["stc_s"] = stcSeconds;
   state.counters["ratio"] = stcSeconds > 0 ? smoothSeconds / stcSeconds : 0;
   state.counters["threads"] = ctx.threads;
+  state.counters["defaults"] = static_cast<double>(state.range(2));
 }
 BENCHMARK(BM_SmoothStcVsStc)
-    ->ArgsProduct({{1'000, 10'000, 100'000, 1'000'000}, {1, 2}})
+    ->ArgsProduct({{1'000, 10'000, 100'000, 1'000'000}, {1, 2}, {0, 1}})
     ->Iterations(1)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
