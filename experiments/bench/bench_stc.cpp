@@ -5,8 +5,8 @@
 #include <coverkit/planners/registry.h>
 
 #include <chrono>
-#include <map>
 #include <cmath>
+#include <map>
 
 using namespace coverkit;
 
@@ -79,10 +79,11 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
   planners::PlanningContext ctx = gridContext(4 * state.range(0), side);
   ctx.threads = static_cast<unsigned>(state.range(1));  // Smooth-STC's sweeps; STC has no parallel phase
   double smoothSeconds = 0, stcSeconds = 0;
+  const std::map<std::string, std::string> params =
+      state.range(2) ? std::map<std::string, std::string>{} : std::map<std::string, std::string>{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
-    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
-    Plan smooth = planners::runPlanner("smooth_stc", ctx, state.range(2) ? std::map<std::string, std::string>{} : paperTree);
+    Plan smooth = planners::runPlanner("smooth_stc", ctx, params);
     auto t1 = std::chrono::steady_clock::now();
     Plan stc = planners::runPlanner("stc", ctx, {});
     auto t2 = std::chrono::steady_clock::now();

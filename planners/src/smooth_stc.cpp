@@ -84,10 +84,10 @@
 
 #include "walk_path.h"
 
-#include <chrono>
-#include <cmath>
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <set>
@@ -310,10 +310,8 @@ public:
       open.push_back(openings(*walk));
       for (const Opening& o : open.back()) requests.push_back(requestOf(cells_, *walk, o));
     }
-    const Rational r = ctx_.problem.robots.at(0).radius;
-    const std::vector<CSpace::Sweep> all =
-        CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads, trace_);
-    const std::vector<std::uint8_t> inner = checkInner(all);
+    std::vector<std::uint8_t> inner;
+    const std::vector<CSpace::Sweep> all = offlineSweeps(requests, inner);
     std::size_t from = 0;
     for (std::size_t i = 0; i < tours.size(); ++i) {
       const std::size_t n = open[i].size();
@@ -390,20 +388,23 @@ private:
   /// The sweeps of the openings; offline also `innerClear`: whether each sweep's pieces other than
   /// its first and last (which insert() trims to the path) keep the disc clear, checked exactly on
   /// ctx.threads threads (insert() checks the rest; empty online, where insert() checks all).
+  /// Offline: each sweep clipped from the C-obstacle pieces near its rectangle
+  /// (CSpace::localSweeps): no C-space of the whole map, a cost linear in the sweeps; and whether
+  /// each one's inner pieces are exactly clear (checkInner).
+  std::vector<CSpace::Sweep> offlineSweeps(const std::vector<CSpace::SweepRequest>& requests, std::vector<std::uint8_t>& innerClear) {
+    const Rational r = ctx_.problem.robots.at(0).radius;
+    std::vector<CSpace::Sweep> out =
+        CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads, trace_);
+    innerClear = checkInner(out);
+    return out;
+  }
+
   std::vector<CSpace::Sweep> contours(const std::vector<CellIndex>& walk, const std::vector<Opening>& open,
                                       std::vector<std::uint8_t>& innerClear) {
     std::vector<CSpace::SweepRequest> requests;
     requests.reserve(open.size());
     for (const Opening& o : open) requests.push_back(requestOf(cells_, walk, o));
-    if (!sensor_) {
-      // Offline: each sweep clipped from the C-obstacle pieces near its rectangle
-      // (CSpace::localSweeps): no C-space of the whole map, a cost linear in the sweeps.
-      const Rational r = ctx_.problem.robots.at(0).radius;
-      std::vector<CSpace::Sweep> out =
-          CSpace::localSweeps(ctx_.problem.workspace, Rational(r + slackOf(ctx_.problem.workspace)), requests, 1e-6, ctx_.threads, trace_);
-      innerClear = checkInner(out);
-      return out;
-    }
+    if (!sensor_) return offlineSweeps(requests, innerClear);
     // Online (Algorithm 2, step 2.4.1): the robot reaches each opening in walk order, senses its
     // mega-cell and the leaf, and each further mega-cell of a run from the one before as the
     // contour reaches it; the sweep is made from the obstacles reported so far (OnlineSweeper).
