@@ -48,6 +48,7 @@
 //    mega-cells of one component (status invalid_start otherwise).
 #include <coverkit/planners/multi_stc.h>
 
+#include "subcell_regions.h"
 #include "team_steps.h"
 #include "walk_path.h"
 
@@ -128,6 +129,13 @@ long balance(const std::vector<long>& gap, std::vector<long>& b, std::vector<lon
 
 /// Teams larger than this skip the regions split (its links between regions are a k × k table).
 constexpr std::size_t kMaxRegions = 1024;
+
+/// Regions of sub-cells (subcell_regions.h) are tried only on tours of at most this many sub-cells
+/// with at most kMaxSubcellsPerRobot each on average (16 mega-cells): with more, whole mega-cells
+/// are within ⌈n/k⌉ / (n/k) ≤ 1 + 1/16 of the mean, and the refinement's walks grow long (its cost
+/// grows with the regions' size; on maps with obstacles, where the mean cannot be reached, it runs
+/// to its work bound).
+constexpr std::size_t kMaxSubcellRegions = std::size_t{1} << 14, kMaxSubcellsPerRobot = 64;
 
 /// The longest of the robots' routes: the makespan in steps of a split.
 std::size_t longest(const std::vector<std::vector<CellIndex>>& routes) {
@@ -723,7 +731,10 @@ std::vector<ParamSpec> MultiStcBalancedPlanner::params() const {
            "auto: equal pieces of the tour reached by conflict-free travel where that finishes sooner than the stretches; off: the stretches only"},
           {"regions", ParamType::kChoice, "auto", "auto|off",
            "auto (static worlds): connected regions of balanced size around the starts, one STC tour each, where that finishes sooner "
-           "than the split above; off: never"}};
+           "than the split above; off: never"},
+          {"subcells", ParamType::kChoice, "auto", "auto|off",
+           "auto (with regions, on tours of at most 16384 sub-cells and 64 per robot): regions refined by passing single sub-cells "
+           "where whole mega-cells leave the makespan above the mean, each covered by a walk of its own; off: whole mega-cells only"}};
 }
 
 Capabilities MultiStcBalancedPlanner::capabilities() const {
@@ -855,15 +866,26 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
       }
     }
     if (!owner.empty() && longest(own) < longest(route)) {
-      route.swap(own);
+      route = own;
       split = "regions";
+    }
+    // crowded small maps: regions of sub-cells, where whole mega-cells leave the makespan above the mean
+    const std::size_t even = (static_cast<std::size_t>(L) + k - 1) / k;
+    if (params.text("subcells") == "auto" && longest(route) > even && static_cast<std::size_t>(L) <= kMaxSubcellRegions &&
+        static_cast<std::size_t>(L) <= kMaxSubcellsPerRobot * k) {
+      std::vector<std::vector<CellIndex>> fine = subcellRegions(cells, g, startCell, owner, own, stop);
+      if (!fine.empty() && longest(fine) < longest(route)) {
+        route.swap(fine);
+        split = "subcell regions";
+      }
     }
   }
   plan.timings.emplace_back("split", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   writeTimedPaths(problem, timing, route, plan);
   plan.statistics["tour_subcells"] = static_cast<double>(L);
   plan.statistics["travelled"] = split == "travel" ? 1 : 0;
-  plan.statistics["regions"] = split == "regions" ? 1 : 0;
+  plan.statistics["regions"] = split == "regions" || split == "subcell regions" ? 1 : 0;
+  plan.statistics["subcell_regions"] = split == "subcell regions" ? 1 : 0;
   plan.statistics["subcells_skipped"] = static_cast<double>(skipped);
   plan.status = skipped ? PlanStatus::kPartialCoverage : PlanStatus::kExactSolution;
   plan.message = skipped ? "left out " + std::to_string(skipped) + " sub-cells of the tour that no way could reach past the moving obstacles"

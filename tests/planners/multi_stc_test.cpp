@@ -195,6 +195,62 @@ TEST(MultiStc, RegionsBalanceAnOpenMap) {
   }
 }
 
+// Crowded small maps, where regions of whole mega-cells cannot be balanced: an L-shaped room of 64
+// mega-cells (r = 1/2; arms 8 m wide) with 13, 20 and 24 robots placed farthest apart took 1.219,
+// 1.250 and 1.500 × the ideal with whole mega-cells (20 robots: 1.25 × is the bound for any split
+// into whole mega-cells). Regions of sub-cells bring each within 1.15 ×; every plan valid, every
+// sub-cell entered by exactly one robot, the same bytes twice; with subcells=off the whole-mega-cell
+// split is back. Two robots in one mega-cell (no whole-mega-cell regions exist) get regions too
+// (8 robots: 1.375 × with travel, the best split without sub-cell regions there).
+TEST(MultiStc, SubcellRegionsBalanceACrowdedRoom) {
+  Workspace room;
+  room.name = "L";
+  Region r;
+  r.outer = {{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 20}, {0, 20}};
+  room.regions.push_back(r);
+  normalise(room);
+  const double cells = 256;
+  auto disjointAndWhole = [&](const planners::PlanningContext& ctx, const Plan& plan) {
+    std::vector<int> by(static_cast<std::size_t>(ctx.cells.subCols() * ctx.cells.subRows()), -1);
+    for (std::size_t i = 0; i < plan.paths.size(); ++i) {
+      Plan one;
+      one.paths = {plan.paths[i]};
+      const std::vector<char> mine = enteredSubcells(ctx.cells, one);
+      for (std::size_t c = 0; c < mine.size(); ++c)
+        if (mine[c]) {
+          EXPECT_EQ(by[c], -1) << "sub-cell " << c << " entered by robots " << by[c] << " and " << i;
+          by[c] = static_cast<int>(i);
+        }
+    }
+    EXPECT_EQ(static_cast<double>(std::count_if(by.begin(), by.end(), [](int o) { return o >= 0; })), cells);
+  };
+  for (std::size_t k : {13u, 20u, 24u}) {
+    SCOPED_TRACE("k = " + std::to_string(k));
+    const planners::PlanningContext ctx = team(room, Rational(1, 2), k);
+    const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+    ASSERT_TRUE(planIsValid(ctx, plan));
+    EXPECT_EQ(plan.statistics.at("subcell_regions"), 1);
+    EXPECT_EQ(plan.statistics.at("regions"), 1);
+    EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * cells / static_cast<double>(k));
+    disjointAndWhole(ctx, plan);
+    EXPECT_EQ(pathJsonOf(plan), pathJsonOf(planners::runPlanner("multi_stc_balanced", ctx, {}, 0)));
+    const Plan whole = planners::runPlanner("multi_stc_balanced", ctx, {{"subcells", "off"}}, 0);
+    ASSERT_TRUE(planIsValid(ctx, whole));
+    EXPECT_EQ(whole.statistics.at("subcell_regions"), 0);
+    EXPECT_GT(whole.statistics.at("makespan_steps"), 1.15 * cells / static_cast<double>(k));
+  }
+  // robots 0 and 1 share the mega-cell [0, 2] x [0, 2] (8 robots: 32 sub-cells each)
+  std::vector<Point> starts;
+  for (auto [x, y] : std::vector<std::pair<int, int>>{{1, 1}, {3, 1}, {1, 39}, {39, 1}, {9, 9}, {1, 21}, {21, 9}, {13, 29}})
+    starts.push_back(Point{Rational(x, 2), Rational(y, 2)});
+  const planners::PlanningContext ctx = team(room, Rational(1, 2), 8, starts);
+  const Plan plan = planners::runPlanner("multi_stc_balanced", ctx, {}, 0);
+  ASSERT_TRUE(planIsValid(ctx, plan));
+  EXPECT_EQ(plan.statistics.at("subcell_regions"), 1);
+  EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * cells / 8);
+  disjointAndWhole(ctx, plan);
+}
+
 // With travel (the default when regions are off), an obstacle-free map is split evenly: the
 // makespan within 1.15 × the ideal (free sub-cells / k) steps for 2 to 16 robots placed farthest
 // apart, every plan valid; with travel=off the stretches alone (each robot covering only next to its
