@@ -27,6 +27,22 @@ planners::PlanningContext team(const Workspace& w, const Rational& r, std::size_
   return planners::makeContext(std::move(p));
 }
 
+/// Disjoint: no sub-cell entered by two robots; together `cells` sub-cells.
+void expectDisjointAndWhole(const planners::PlanningContext& ctx, const Plan& plan, double cells) {
+  std::vector<int> by(static_cast<std::size_t>(ctx.cells.subCols() * ctx.cells.subRows()), -1);
+  for (std::size_t i = 0; i < plan.paths.size(); ++i) {
+    Plan one;
+    one.paths = {plan.paths[i]};
+    const std::vector<char> mine = enteredSubcells(ctx.cells, one);
+    for (std::size_t c = 0; c < mine.size(); ++c)
+      if (mine[c]) {
+        EXPECT_EQ(by[c], -1) << "sub-cell " << c << " entered by robots " << by[c] << " and " << i;
+        by[c] = static_cast<int>(i);
+      }
+  }
+  EXPECT_EQ(static_cast<double>(std::count_if(by.begin(), by.end(), [](int o) { return o >= 0; })), cells);
+}
+
 }  // namespace
 
 TEST(MultiStc, TeamPlansAreValidCompleteAndBalanced) {
@@ -163,19 +179,7 @@ TEST(MultiStc, RegionsBalanceAnOpenMap) {
       ASSERT_TRUE(planIsValid(ctx, plan));
       EXPECT_EQ(plan.statistics.at("regions"), 1);
       EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * cells / static_cast<double>(k));
-      // disjoint: no sub-cell entered by two robots; together every one
-      std::vector<int> by(static_cast<std::size_t>(ctx.cells.subCols() * ctx.cells.subRows()), -1);
-      for (std::size_t i = 0; i < k; ++i) {
-        Plan one;
-        one.paths = {plan.paths[i]};
-        const std::vector<char> mine = enteredSubcells(ctx.cells, one);
-        for (std::size_t c = 0; c < mine.size(); ++c)
-          if (mine[c]) {
-            EXPECT_EQ(by[c], -1) << "sub-cell " << c << " entered by robots " << by[c] << " and " << i;
-            by[c] = static_cast<int>(i);
-          }
-      }
-      EXPECT_EQ(static_cast<double>(std::count_if(by.begin(), by.end(), [](int o) { return o >= 0; })), cells);
+      expectDisjointAndWhole(ctx, plan, cells);
     }
   }
   for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
@@ -210,20 +214,6 @@ TEST(MultiStc, SubcellRegionsBalanceACrowdedRoom) {
   room.regions.push_back(r);
   normalise(room);
   const double cells = 256;
-  auto disjointAndWhole = [&](const planners::PlanningContext& ctx, const Plan& plan) {
-    std::vector<int> by(static_cast<std::size_t>(ctx.cells.subCols() * ctx.cells.subRows()), -1);
-    for (std::size_t i = 0; i < plan.paths.size(); ++i) {
-      Plan one;
-      one.paths = {plan.paths[i]};
-      const std::vector<char> mine = enteredSubcells(ctx.cells, one);
-      for (std::size_t c = 0; c < mine.size(); ++c)
-        if (mine[c]) {
-          EXPECT_EQ(by[c], -1) << "sub-cell " << c << " entered by robots " << by[c] << " and " << i;
-          by[c] = static_cast<int>(i);
-        }
-    }
-    EXPECT_EQ(static_cast<double>(std::count_if(by.begin(), by.end(), [](int o) { return o >= 0; })), cells);
-  };
   for (std::size_t k : {13u, 20u, 24u}) {
     SCOPED_TRACE("k = " + std::to_string(k));
     const planners::PlanningContext ctx = team(room, Rational(1, 2), k);
@@ -232,7 +222,7 @@ TEST(MultiStc, SubcellRegionsBalanceACrowdedRoom) {
     EXPECT_EQ(plan.statistics.at("subcell_regions"), 1);
     EXPECT_EQ(plan.statistics.at("regions"), 1);
     EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * cells / static_cast<double>(k));
-    disjointAndWhole(ctx, plan);
+    expectDisjointAndWhole(ctx, plan, cells);
     EXPECT_EQ(pathJsonOf(plan), pathJsonOf(planners::runPlanner("multi_stc_balanced", ctx, {}, 0)));
     const Plan whole = planners::runPlanner("multi_stc_balanced", ctx, {{"subcells", "off"}}, 0);
     ASSERT_TRUE(planIsValid(ctx, whole));
@@ -248,7 +238,7 @@ TEST(MultiStc, SubcellRegionsBalanceACrowdedRoom) {
   ASSERT_TRUE(planIsValid(ctx, plan));
   EXPECT_EQ(plan.statistics.at("subcell_regions"), 1);
   EXPECT_LE(plan.statistics.at("makespan_steps"), 1.15 * cells / 8);
-  disjointAndWhole(ctx, plan);
+  expectDisjointAndWhole(ctx, plan, cells);
 }
 
 // With travel (the default when regions are off), an obstacle-free map is split evenly: the
