@@ -92,7 +92,8 @@ public:
     return n;
   }
 
-  /// The walk of region R from s (size: its sub-cells), as regionWalk in the header comment.
+  /// The walk of region R from s (size: its sub-cells): a Hamiltonian path where hamiltonian() finds
+  /// one within `budget` steps of search, else greedy()'s walk.
   std::vector<long> walk(int R, long s, std::size_t size, std::size_t budget) {
     if (size == 0) return {};
     std::vector<long> path = hamiltonian(R, s, size, budget);
@@ -470,6 +471,12 @@ std::vector<std::vector<CellIndex>> subcellRegions(const CellGrid& cells, const 
     std::vector<std::vector<long>> out = refine(sp, start, std::move(walks), members, bound, stop);
     if (!out.empty() && (best.empty() || score(out) < score(best))) best = std::move(out);
   };
+  // a split whose regions have no walks yet (refine sets the sizes it needs)
+  auto considerWalked = [&](Split& sp, const std::vector<std::vector<long>>& members) {
+    std::vector<std::vector<long>> walks(k);
+    for (std::size_t i = 0; i < k; ++i) walks[i] = sp.walk(static_cast<int>(i), start[i], members[i].size(), walkBudget(members[i].size()));
+    consider(sp, std::move(walks), members);
+  };
   // from the whole-mega-cell regions and their tours
   if (!megaOwner.empty() && megaRoutes.size() == k) {
     Split sp = base;
@@ -509,11 +516,7 @@ std::vector<std::vector<CellIndex>> subcellRegions(const CellGrid& cells, const 
           open.push_back(u);
         }
     }
-    sp.size_.assign(k, 0);
-    for (std::size_t i = 0; i < k; ++i) sp.size_[i] = static_cast<long>(members[i].size());
-    std::vector<std::vector<long>> walks(k);
-    for (std::size_t i = 0; i < k; ++i) walks[i] = sp.walk(static_cast<int>(i), start[i], members[i].size(), walkBudget(members[i].size()));
-    consider(sp, std::move(walks), members);
+    considerWalked(sp, members);
   }
   // still above the mean (rounded up): restarts from seeded random additive weights, each sub-cell
   // to the start i with the least steps + w_i (ties to the lower index; additive weights keep each
@@ -552,11 +555,7 @@ std::vector<std::vector<CellIndex>> subcellRegions(const CellGrid& cells, const 
       bool joined = true;   // every start its own (a start another start's weight took: no split)
       for (std::size_t i = 0; i < k && joined; ++i) joined = sp.owner[static_cast<std::size_t>(start[i])] == static_cast<int>(i);
       if (!joined) continue;
-      sp.size_.assign(k, 0);
-      for (std::size_t i = 0; i < k; ++i) sp.size_[i] = static_cast<long>(members[i].size());
-      std::vector<std::vector<long>> walks(k);
-      for (std::size_t i = 0; i < k; ++i) walks[i] = sp.walk(static_cast<int>(i), start[i], members[i].size(), walkBudget(members[i].size()));
-      consider(sp, std::move(walks), members);
+      considerWalked(sp, members);
     }
   }
   std::vector<std::vector<CellIndex>> routes(best.size());
