@@ -79,6 +79,7 @@
 #include <coverkit/planners/sensor.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <chrono>
 #include <deque>
@@ -1141,14 +1142,57 @@ Plan MultiStPlanner::planWith(const PlanningContext& ctx, const ParamSet& params
       plan.message = formatDouble(plan.statistics["moves_unsafe"]) + " moves have no exactly safe double coordinates";
     }
   } else {
-    std::unique_ptr<TeamSensor> own;
-    if (!given) own = std::make_unique<TeamSensor>(cells, starts, moveClear, horizon);
-    TeamSensor& sensor = given ? *given : *own;
-    Team team(ctx, timing, kb, kbOn, sensor);
-    plan.status = team.run(starts, stop, plan);
-    std::vector<std::vector<CellIndex>> route(k);
-    for (std::size_t i = 0; i < k; ++i) route[i] = team.robots()[i].route;
-    writeTimedPaths(problem, timing, route, plan);
+    // A robot caught by a moving obstacle (a step of its route not clear of it, or its last cell
+    // not clear for good): the team runs again with the sensor's horizon doubled, then four and
+    // eight times, and the first run nobody is caught in is the plan (else the one with the fewest
+    // such steps, the first among equals); `horizon_used` and `horizon_runs` say which. Only the
+    // robots' own sensor is replaced: a sensor given by the caller (tests) is run once.
+    const std::vector<int> ladder = given || problem.movingObstacles.empty() ? std::vector<int>{horizon}
+                                                                            : std::vector<int>{horizon, 2 * horizon, 4 * horizon, 8 * horizon};
+    auto caughtSteps = [&](const std::vector<std::vector<CellIndex>>& route) {
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < k; ++i) {
+        for (std::size_t m = 1; m < route[i].size(); ++m) n += moveClear(i, route[i][m - 1], route[i][m], static_cast<long>(m)) ? 0 : 1;
+        if (!route[i].empty()) {
+          const PointD last = timing.centre(route[i].back());
+          n += timing.clear(i, last, last, static_cast<double>(route[i].size()) * timing.step, HUGE_VAL) ? 0 : 1;
+        }
+      }
+      return n;
+    };
+    Plan best;
+    std::vector<std::vector<CellIndex>> bestRoute;
+    std::size_t bestCaught = 0, runs = 0;
+    int used = horizon;
+    for (const int h : ladder) {
+      ++runs;
+      Plan attempt;
+      std::unique_ptr<TeamSensor> own;
+      if (!given) own = std::make_unique<TeamSensor>(cells, starts, moveClear, h);
+      TeamSensor& sensor = given ? *given : *own;
+      Team team(ctx, timing, kb, kbOn, sensor);
+      attempt.status = team.run(starts, stop, attempt);
+      std::vector<std::vector<CellIndex>> route(k);
+      for (std::size_t i = 0; i < k; ++i) route[i] = team.robots()[i].route;
+      const std::size_t caught = problem.movingObstacles.empty() ? 0 : caughtSteps(route);
+      if (runs == 1 || caught < bestCaught) {
+        best = std::move(attempt);
+        bestRoute = std::move(route);
+        bestCaught = caught;
+        used = h;
+      }
+      if (bestCaught == 0 || stop.expired()) break;
+    }
+    plan = std::move(best);
+    writeTimedPaths(problem, timing, bestRoute, plan);
+    if (!problem.movingObstacles.empty()) {
+      plan.statistics["horizon_used"] = used;
+      plan.statistics["horizon_runs"] = static_cast<double>(runs);
+      plan.statistics["steps_caught"] = static_cast<double>(bestCaught);
+      if (bestCaught > 0)
+        plan.message = "robots caught by moving obstacles in " + std::to_string(bestCaught) + " steps with every horizon tried (" +
+                       std::to_string(ladder.front()) + "-" + std::to_string(ladder.back()) + " steps)" + (plan.message.empty() ? "" : "; " + plan.message);
+    }
   }
   if (plan.message.empty()) plan.message = "covered";
   plan.timings.emplace_back("team", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

@@ -152,15 +152,29 @@ void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::
   };
   for (const Robot& r : robots)
     if (r.start && cellOf(*r.start) >= 0) placed.push_back(cellOf(*r.start));
-  // within r + a moving obstacle's radius of its first place (with a margin; checkProblem decides exactly)
+  // within r + a moving obstacle's radius of where it is in the first kPlacementClearSeconds (with
+  // a margin; checkProblem decides the first place exactly): a robot placed where an obstacle
+  // arrives at once could not leave in time (its first step, onto its sub-cell's centre, would
+  // meet it); one clear for that long has ten steps of 0.1 s to get out of the way
+  constexpr double kPlacementClearSeconds = 1.0;
   auto nearObstacle = [&](long v, const Rational& radius) {
     if (obstacles.empty()) return false;
     const PointD c = waypoint(v);
     for (const MovingObstacle& m : obstacles) {
       if (m.waypoints.empty()) continue;
-      const double dx = c.x - m.waypoints.front().p.x, dy = c.y - m.waypoints.front().p.y;
       const double reach = Rational(radius + m.radius).get_d() * (1 + 1e-9) + 1e-9;
-      if (dx * dx + dy * dy < reach * reach) return true;
+      // the obstacle's way over [0, kPlacementClearSeconds]: straight between its waypoints
+      std::vector<PointD> way{m.at(0)};
+      for (const TimedPoint& w : m.waypoints)
+        if (w.t > 0 && w.t < kPlacementClearSeconds) way.push_back(w.p);
+      way.push_back(m.at(kPlacementClearSeconds));
+      for (std::size_t i = 0; i + 1 < way.size(); ++i) {
+        const PointD a = way[i], b = way[i + 1];
+        const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+        const double u = len2 > 0 ? std::clamp(((c.x - a.x) * dx + (c.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+        const double ex = a.x + u * dx - c.x, ey = a.y + u * dy - c.y;
+        if (ex * ex + ey * ey < reach * reach) return true;
+      }
     }
     return false;
   };
@@ -292,9 +306,44 @@ void checkCellGridSize(const Problem& problem) {
                        approx(mpz_class(kMaxSubCells)) + " sub-cells: use a larger " + (byCellSize ? "cell size" : "radius or cell size"));
 }
 
+namespace {
+
+/// Whether every sub-cell centre x0 + (i + 1/2)·D, i < n, is a double.
+bool centresAreDoubles(const Rational& x0, const Rational& D, const Rational& extent) {
+  const Rational q = extent / (2 * D);
+  mpz_class mega;
+  mpz_cdiv_q(mega.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  const long n = 2 * std::max(1L, mega.get_si());
+  for (long i = 0; i < n; ++i) {
+    const Rational c = x0 + ratio(2 * i + 1, 2) * D;
+    if (Rational(toDouble(c)) != c) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Rational> teamSubCellSize(const Problem& problem) {
+  if ((problem.robots.size() < 2 && problem.movingObstacles.empty()) || problem.cellSize) return std::nullopt;
+  const Rational twoR = 2 * problem.robots[0].radius;
+  const Box b = problem.workspace.bbox();
+  if (centresAreDoubles(b.xmin, twoR, b.xmax - b.xmin) && centresAreDoubles(b.ymin, twoR, b.ymax - b.ymin)) return std::nullopt;
+  // δ: the power of two at or above the map's largest coordinate magnitude (at least 1), times 2^-30
+  double far = 1;
+  for (const Rational* v : {&b.xmin, &b.xmax, &b.ymin, &b.ymax}) far = std::max(far, std::abs(toDouble(*v)));
+  int e = 0;
+  std::frexp(far, &e);   // far < 2^e
+  const Rational delta = e - 30 >= 0 ? Rational(mpz_class(1) << static_cast<unsigned>(e - 30)) : Rational(mpz_class(1), mpz_class(1) << static_cast<unsigned>(30 - e));
+  const Rational q = twoR / delta;
+  mpz_class steps;
+  mpz_cdiv_q(steps.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  return Rational(mpz_class(steps + 1)) * delta;
+}
+
 PlanningContext makeContext(Problem problem, bool teamStarts) {
   checkProblem(problem, teamStarts);
   checkCellGridSize(problem);  // before the grid is allocated
+  if (std::optional<Rational> D = teamSubCellSize(problem)) problem.cellSize = *D;
   PlanningContext ctx;
   const auto t0 = std::chrono::steady_clock::now();
   ctx.cells = classifyCells(problem.workspace, problem.subCellSize());

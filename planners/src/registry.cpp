@@ -51,6 +51,10 @@ Plan runPlanner(const std::string& name, const PlanningContext& context, const s
   if (context.problem.robots.size() > 1 && !planner->capabilities().multiRobot)
     throw InputError("--planner", name, "plans for one robot, and the problem has " + std::to_string(context.problem.robots.size()) +
                                             " (team planners: multi_st, multi_stc_balanced)");
+  // a planner for one robot in a static world would drive through the moving obstacles
+  if (!context.problem.movingObstacles.empty() && !planner->capabilities().multiRobot)
+    throw InputError("--planner", name, "plans in static worlds, and the scenario has " + std::to_string(context.problem.movingObstacles.size()) +
+                                            " moving obstacle(s) (planners that keep clear of them: multi_st, multi_stc_balanced)");
   Plan plan = planner->plan(context, set, TerminationCondition(timeLimitSeconds));
   plan.planner = name;
   plan.timings.insert(plan.timings.begin(), {"cells", context.cellSeconds});

@@ -443,6 +443,8 @@ expect_bad "team: a start in an obstacle" "inside an obstacle" $(team) --start 1
 expect_bad "team: fewer --robots than starts" "--robots: 1: fewer robots than --start options" $(team) --start 1,1 --start 3,1 --robots 1
 expect_bad "team: --robots negative" "--robots: -2: must be >= 1" $(team) --robots -2
 expect_bad "team: a single-robot planner" "--planner: stc: plans for one robot" $(plan) "$T/room.wkt" --robots 2
+expect_bad "scenario: a single-robot planner among moving obstacles" "--planner: stc: plans in static worlds, and the scenario has 1 moving obstacle(s)" \
+  $(plan) "$T/room.wkt" --start 1,1 --scenario "$T/still.yaml"
 expect_bad "scenario: a waypoint of two numbers" "short.yaml: dynamic_obstacles[0].waypoints[1]: expected [t, x, y]" $(team) --scenario "$T/short.yaml"
 expect_bad "scenario: a misspelt key" "typo.yaml: dynamic_obstacle: unknown key" $(team) --scenario "$T/typo.yaml"
 expect_bad "scenario: missing file" "nothere.yaml" $(team) --scenario "$T/nothere.yaml"
@@ -456,6 +458,12 @@ expect_bad "team: --robots with every place under an obstacle" "--robots: 2: no 
   "$CK" evaluate --map "$DATA/maze.map" --path "$T/team.json" --scenario "$T/still.yaml" > "$T/team2.out" 2>&1; rc=$?
 [ -f "$T/team.out" ] && grep -q "valid: yes" "$T/team.out" && { [ $rc -eq 0 ] || grep -q "robot_obstacle" "$T/team2.out"; } && ok ||
   bad "team plan and its evaluation: $(cat "$T/team.out" "$T/team2.out" 2> /dev/null | head -5)"
+# a radius whose sub-cell centres are not doubles (r = 0.4): the team plans on sub-cells a little
+# larger than 2r (written as cell_size_exact), and evaluate, reading that size, finds it valid
+"$CK" plan --planner multi_st --map "$T/room.wkt" --radius 0.4 --robots 3 --scenario "$T/still.yaml" --out "$T/wide.json" > /dev/null 2>&1 &&
+  python3 -c "import json,sys; from fractions import Fraction as F; d=F(json.load(open(sys.argv[1]))['cell_size_exact']); assert F(4,5) < d < F(4,5) + F(1, 2**20)" "$T/wide.json" &&
+  "$CK" evaluate --map "$T/room.wkt" --path "$T/wide.json" --scenario "$T/still.yaml" 2>&1 | grep -q "valid: yes" && ok ||
+  bad "team at r = 0.4: $(head -c 300 "$T/wide.json" 2> /dev/null)"
 # among a moving obstacle: planned around it, and valid against it
 "$CK" plan --planner multi_stc_balanced --map "$T/room.wkt" --radius 0.25 --start 1,1 --start 9,9 --scenario "$T/still.yaml" \
   --out "$T/moving.json" > /dev/null 2>&1 &&

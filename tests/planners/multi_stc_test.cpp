@@ -153,13 +153,24 @@ TEST(MultiStc, BadTeamsAreRejected) {
   const Workspace holed = boxWith({{{Rational(9, 2), Rational(9, 2)}, {Rational(9, 2), Rational(11, 2)}, {Rational(11, 2), Rational(11, 2)}, {Rational(11, 2), Rational(9, 2)}}});
   const planners::PlanningContext partial = team(holed, Rational(1, 4), 2, {Point{Rational(1), Rational(1)}, Point{Rational(17, 4), Rational(17, 4)}});
   EXPECT_EQ(planners::runPlanner("multi_stc_balanced", partial, {}, 0).status, PlanStatus::kInvalidStart);
-  // a grid whose sub-cell centres are not doubles with D = 2r: refused with the way out; a
-  // sub-cell a little larger plans
-  const planners::PlanningContext tenth = team(w, Rational(1, 10), 3);
-  EXPECT_NE(inputErrorMessage([&] { planners::runPlanner("multi_stc_balanced", tenth, {}, 0); }).find("--cell-size a little larger than 2r"),
-            std::string::npos);
-  const planners::PlanningContext wider = team(w, Rational(1, 10), 3, {}, Rational(1, 5) + Rational(1, 1000000));
-  EXPECT_TRUE(planIsValid(wider, planners::runPlanner("multi_stc_balanced", wider, {}, 0)));
+  // a grid whose sub-cell centres are not doubles with D = 2r (r = 1/10 or 2/5): without a cell
+  // size the team plans on sub-cells a little larger (teamSubCellSize: at most 2^-25 over 2r on this
+  // 10 m map), validly with both team planners; a cell size given as 2r is refused with the way out
+  for (const Rational& r : {Rational(1, 10), Rational(2, 5)}) {
+    const planners::PlanningContext wider = team(w, r, 3);
+    EXPECT_GT(wider.cells.subSize(), 2 * r);
+    EXPECT_LE(wider.cells.subSize(), 2 * r + Rational(1, 1 << 25));
+    for (const char* planner : {"multi_stc_balanced", "multi_st"}) {
+      const Plan plan = planners::runPlanner(planner, wider, {}, 0);
+      EXPECT_TRUE(planIsValid(wider, plan)) << planner << " r = " << r.get_str();
+      EXPECT_EQ(plan.status, PlanStatus::kExactSolution) << planner << " r = " << r.get_str();
+    }
+    const planners::PlanningContext given = team(w, r, 3, {}, 2 * r);
+    EXPECT_NE(inputErrorMessage([&] { planners::runPlanner("multi_stc_balanced", given, {}, 0); }).find("--cell-size a little larger than 2r"),
+              std::string::npos);
+  }
+  // one robot keeps D = 2r (single-robot paths are made safe move by move, docs/stc-family.md)
+  EXPECT_EQ(team(w, Rational(1, 10), 1).cells.subSize(), Rational(1, 5));
 }
 
 // The regions split (the default on static worlds): each robot's sub-cells are its own, connected

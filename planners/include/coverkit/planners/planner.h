@@ -96,6 +96,20 @@ constexpr long kMaxSubCells = 200'000'000L;
 /// exactly, before anything is allocated.
 void checkCellGridSize(const Problem& problem);
 
+/// The sub-cell size a team plans on where D = 2r will not do. Two robots side by side in one
+/// mega-cell stand exactly D apart at the sub-cell centres; where a centre is not a double (2r = 4/5
+/// on a grid from 0, say) it is written an ulp towards its mega-cell's centre, and the two robots
+/// would be an ulp nearer than 2r (and one robot among moving obstacles, whose timed steps go from
+/// centre to centre, an ulp into a wall beside it). So for a problem of two robots or more, or
+/// with moving obstacles, without a cell size of its own, whose centres at D = 2r are not all
+/// doubles, D is 2r rounded up to a multiple of
+/// δ = 2^(e − 30), plus δ, where 2^e is the power of two just above the map's largest coordinate
+/// (at least 1): on a map of 32 m, δ = 2^-25 m (3·10^-8 m). The centres are then doubles wherever
+/// the map's corner is a multiple of δ/2, and otherwise more than 2^20 ulps further apart than 2r.
+/// The lanes of neighbouring sub-cells are at most 2δ further apart than the disc is wide, below what
+/// any area figure resolves. nullopt: D = 2r (or the given cell size) stands. makeContext applies it.
+std::optional<Rational> teamSubCellSize(const Problem& problem);
+
 /// Builds the context: checks the problem and the size of its cell grid (InputError) before allocating
 /// anything, classifies cells once, and fills in the default start where none was given (see defaultStart).
 PlanningContext makeContext(Problem problem, bool teamStarts = true);
