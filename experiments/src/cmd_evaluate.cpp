@@ -8,6 +8,7 @@
 #include <coverkit/datasets/scenario.h>
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/error.h>
+#include <coverkit/planners/multi_stc.h>
 
 #include <nlohmann/json.hpp>
 
@@ -31,22 +32,33 @@ Options& options() {
   return o;
 }
 
-nlohmann::json evaluationJson(const ValidationReport& v, const Metrics& m) {
+/// The metrics, and for timed (team) plans what they left (missed_from_starts, missed_from_team).
+std::vector<std::pair<std::string, double>> fields(const Metrics& m, const std::optional<planners::MissedSubcells>& missed) {
+  std::vector<std::pair<std::string, double>> out;
+  for (auto& [k, val] : datasets::metricFields(m)) out.emplace_back(k, val);
+  if (missed) {
+    out.emplace_back("missed_from_starts", static_cast<double>(missed->fromStarts));
+    out.emplace_back("missed_from_team", static_cast<double>(missed->fromTeam));
+  }
+  return out;
+}
+
+nlohmann::json evaluationJson(const ValidationReport& v, const Metrics& m, const std::optional<planners::MissedSubcells>& missed) {
   nlohmann::json j;
   j["valid"] = v.valid;
   j["violations"] = nlohmann::json::array();
   for (const auto& x : v.violations)
     j["violations"].push_back({{"kind", x.kind}, {"robot", x.robot}, {"segment", x.segment}, {"detail", x.detail}});
-  for (auto& [k, val] : datasets::metricFields(m)) j[k] = val;
+  for (auto& [k, val] : fields(m, missed)) j[k] = val;
   if (m.hasArea) j["area_method"] = m.areaMethod;
   return j;
 }
 
-void printEvaluation(const ValidationReport& v, const Metrics& m) {
+void printEvaluation(const ValidationReport& v, const Metrics& m, const std::optional<planners::MissedSubcells>& missed) {
   std::cout << "valid: " << (v.valid ? "yes" : "no") << "\n";
   for (const auto& x : v.violations)
     std::cout << "  violation [" << x.kind << "] robot " << x.robot << " segment " << x.segment << ": " << x.detail << "\n";
-  for (auto& [k, val] : datasets::metricFields(m)) std::cout << "  " << std::left << std::setw(22) << k << formatDouble(val) << "\n";
+  for (auto& [k, val] : fields(m, missed)) std::cout << "  " << std::left << std::setw(22) << k << formatDouble(val) << "\n";
   if (m.hasArea) std::cout << "  area_method           " << m.areaMethod << "\n";
 }
 
@@ -105,8 +117,12 @@ int runEvaluateCommand() {
   for (const auto& [k, sec] : m.seconds) timer.part("metrics", k, sec);
   if (o.speed.timings) std::cerr << timer.report();
   if (!m.coverableSkipped.empty()) std::cerr << "coverkit: note: coverable coverage not computed: " << m.coverableSkipped << "\n";
-  if (o.json) std::cout << evaluationJson(v, m).dump(1) << "\n";
-  else printEvaluation(v, m);
+  // timed plans (teams, or among moving obstacles): the free sub-cells they left
+  std::optional<planners::MissedSubcells> missed;
+  if (std::any_of(doc.paths.begin(), doc.paths.end(), [](const Path& p) { return !p.timeline.empty(); }))
+    missed = planners::missedSubcells(ctx, doc.paths);
+  if (o.json) std::cout << evaluationJson(v, m, missed).dump(1) << "\n";
+  else printEvaluation(v, m, missed);
   return v.valid ? 0 : 1;
 }
 

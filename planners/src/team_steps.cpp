@@ -3,9 +3,11 @@
 
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/validate.h>
+#include <coverkit/planners/multi_stc.h>
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 namespace coverkit::planners {
 
@@ -115,5 +117,88 @@ void stayAtStarts(const Problem& problem, Plan& plan) {
     plan.paths[i].timeline = {{0, plan.paths[i].start}};
   }
 }
+
+// Sub-cells whose centre stays within r + ρ of an obstacle's last place (blocked for good) are
+// neither reachable nor crossed, and a move between neighbouring centres that passes within r + ρ
+// of one is no way either (two clear centres beside a parked obstacle can have a blocked move
+// between them).
+MissedSubcells missedSubcells(const PlanningContext& ctx, const std::vector<Path>& paths) {
+  const CellGrid& c = ctx.cells;
+  const int cols = c.subCols(), rows = c.subRows();
+  auto idx = [&](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(x); };
+  std::vector<char> usable(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), 0), entered(usable.size(), 0);
+  const double r = ctx.problem.robots[0].radius.get_d();
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < cols; ++x) {
+      if (c.sub(x, y) != CellState::kFree) continue;
+      const PointD p = c.subCenterD(x, y);
+      bool parked = false;
+      for (const MovingObstacle& m : ctx.problem.movingObstacles) {
+        const PointD q = m.waypoints.back().p;
+        parked = parked || std::hypot(p.x - q.x, p.y - q.y) < r + m.radius.get_d();
+      }
+      usable[idx(x, y)] = !parked;
+    }
+  for (const Path& path : paths) {
+    auto mark = [&](PointD p) {
+      CellIndex s;
+      if (c.locateSubD(p, s)) entered[idx(s.col, s.row)] = 1;
+    };
+    mark(path.start);
+    for (const TimedPoint& e : path.timeline) mark(e.p);
+  }
+  auto moveClear = [&](int x0, int y0, int x1, int y1) {
+    const PointD a = c.subCenterD(x0, y0), b = c.subCenterD(x1, y1);
+    for (const MovingObstacle& m : ctx.problem.movingObstacles) {
+      const PointD q = m.waypoints.back().p;
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      const double u = std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      if (std::hypot(a.x + u * dx - q.x, a.y + u * dy - q.y) < r + m.radius.get_d()) return false;
+    }
+    return true;
+  };
+  // breadth first from the sources (sub-cells, or not located: skipped) over usable sub-cells
+  auto count = [&](const std::vector<std::pair<bool, CellIndex>>& sources) {
+    std::vector<char> seen(usable.size(), 0);
+    std::deque<CellIndex> open;
+    for (const auto& [located, s] : sources)
+      if (located && !seen[idx(s.col, s.row)]) {
+        seen[idx(s.col, s.row)] = 1;
+        open.push_back(s);
+      }
+    std::size_t missed = 0;
+    while (!open.empty()) {
+      const CellIndex v = open.front();
+      open.pop_front();
+      missed += usable[idx(v.col, v.row)] && !entered[idx(v.col, v.row)] ? 1 : 0;
+      for (int d = 0; d < 4; ++d) {
+        const int x = v.col + (d == 0) - (d == 2), y = v.row + (d == 1) - (d == 3);
+        if (x < 0 || y < 0 || x >= cols || y >= rows || !usable[idx(x, y)] || seen[idx(x, y)] || !moveClear(v.col, v.row, x, y)) continue;
+        seen[idx(x, y)] = 1;
+        open.push_back({x, y});
+      }
+    }
+    return missed;
+  };
+  std::vector<std::pair<bool, CellIndex>> starts, team;
+  for (const Robot& robot : ctx.problem.robots) {
+    CellIndex s;
+    const bool located = c.locateSub(*robot.start, s);
+    starts.emplace_back(located, s);
+  }
+  // where each robot is when the last obstacle stops (the place it reached last by then)
+  double stop = 0;
+  for (const MovingObstacle& m : ctx.problem.movingObstacles) stop = std::max(stop, m.waypoints.back().t);
+  for (const Path& path : paths) {
+    PointD at = path.start;
+    for (const TimedPoint& e : path.timeline)
+      if (e.t <= stop) at = e.p;
+    CellIndex s;
+    const bool located = c.locateSubD(at, s);
+    team.emplace_back(located, s);
+  }
+  return {count(starts), count(team)};
+}
+
 
 }  // namespace coverkit::planners

@@ -455,6 +455,7 @@ expect_bad "team: --robots with every place under an obstacle" "--robots: 2: no 
 "$CK" plan --planner multi_stc_balanced --map "$DATA/maze.map" --radius 0.25 --robots 3 --out "$T/team.json" > /dev/null 2>&1 &&
   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert len(d['robots']) == 3 and all(len(r['timeline']) > 1 for r in d['robots'])" "$T/team.json" &&
   "$CK" evaluate --map "$DATA/maze.map" --path "$T/team.json" > "$T/team.out" 2>&1 && grep -q "valid: yes" "$T/team.out" &&
+  grep -Eq "missed_from_starts +0$" "$T/team.out" && grep -Eq "missed_from_team +0$" "$T/team.out" &&
   "$CK" evaluate --map "$DATA/maze.map" --path "$T/team.json" --scenario "$T/still.yaml" > "$T/team2.out" 2>&1; rc=$?
 [ -f "$T/team.out" ] && grep -q "valid: yes" "$T/team.out" && { [ $rc -eq 0 ] || grep -q "robot_obstacle" "$T/team2.out"; } && ok ||
   bad "team plan and its evaluation: $(cat "$T/team.out" "$T/team2.out" 2> /dev/null | head -5)"

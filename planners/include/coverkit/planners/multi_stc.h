@@ -19,6 +19,17 @@ public:
 
 class TeamSensor;
 
+/// What a team's timed paths left: free sub-cells that no robot entered, reachable (4-connected)
+/// from the robots' starts, and from where they are when the last moving obstacle stops. Sub-cells
+/// whose centre is within r + ρ of an obstacle's last place, and moves between centres passing that
+/// near one, are neither counted nor crossed (blocked for good). Doubles; docs/multi-robot.md ("500
+/// seeded scenarios") says why the second count is the one a team without the obstacles' future can
+/// be held to. Reported by `coverkit evaluate` and the team-check experiment.
+struct MissedSubcells {
+  std::size_t fromStarts = 0, fromTeam = 0;
+};
+MissedSubcells missedSubcells(const PlanningContext& context, const std::vector<Path>& paths);
+
 /// Multi-ST (Pham et al.): online and step-synchronous; the robots grow disjoint spanning trees on
 /// the shared mega-cell grid, sense only their neighbourhood (TeamSensor) and consult a rule
 /// knowledge base when a robot or a moving obstacle is in the way.

@@ -128,8 +128,8 @@ PointD stcWaypoint(const CellGrid& cells, int col, int row);
 /// within reach of it, at the nearest sub-cell clear of them, the first in row order among equals);
 /// each next at the centre (as STC places it) of the sub-cell of a free mega-cell that is farthest, in 4-connected steps over such
 /// sub-cells, from the starts placed so far (the first in row order among equals). InputError when
-/// the reachable sub-cells run out. Sub-cells within r + ρ of a moving obstacle's first place are
-/// passed over. makeContext calls it for problems of several robots.
+/// the reachable sub-cells run out. Sub-cells within r + ρ of where a moving obstacle goes in the
+/// first second are passed over (a robot placed there could not get out of its way in time). makeContext calls it for problems of several robots.
 void spreadStarts(const CellGrid& cells, std::vector<Robot>& robots, const std::vector<MovingObstacle>& obstacles = {});
 
 class Planner {
