@@ -60,6 +60,7 @@
 #include <algorithm>
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <cmath>
 #include <numeric>
 #include <queue>
@@ -551,6 +552,11 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
     pieceFirst[p] = static_cast<long>(first);
     pieceOf[order[(p + bestRot) % k]] = static_cast<long>(p);
   }
+  // the step at which the last moving obstacle stops
+  long lastStop = 0;
+  for (const MovingObstacle& m : timing.problem->movingObstacles)
+    if (!m.waypoints.empty() && std::isfinite(m.waypoints.back().t))
+      lastStop = std::max(lastStop, static_cast<long>(std::min(m.waypoints.back().t / timing.step, 1e6)) + 1);
   // reservations: (step, cell) → taken; per cell the last step a routed robot is in it; parked cells
   // from their step on; robots not routed yet at steps 0 and 1
   std::unordered_map<long long, int> taken;
@@ -574,6 +580,17 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
     return !moving || timing.clear(self, timing.centre(cellOfId(u)), timing.centre(cellOfId(v)), static_cast<double>(t) * timing.step,
                                    static_cast<double>(t + 1) * timing.step);
   };
+  // among moving obstacles: a robot in v at step t has a next step (a wait or a move); entering a
+  // cell from which an obstacle leaves no way on would trap the robot there
+  auto escapable = [&](long t, long v, std::size_t self) {
+    if (!moving) return true;
+    const int c = static_cast<int>(v % cols), r = static_cast<int>(v / cols);
+    for (int d = 0; d <= 4; ++d) {
+      const int nc = d < 4 ? c + kDc[d] : c, nr = d < 4 ? r + kDr[d] : r;
+      if (usable(nc, nr) && allowed(t, v, static_cast<long>(nr) * cols + nc, self)) return true;
+    }
+    return false;
+  };
   std::vector<std::size_t> byTravel(k);
   std::iota(byTravel.begin(), byTravel.end(), 0);
   auto travel = [&](std::size_t i) {
@@ -588,17 +605,26 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
     long f, t, cell;
     long long parent;   // key of the parent state, -1 at the root
   };
-  auto routeTo = [&](std::size_t self, std::vector<long>& route, long target, long horizon, std::size_t budget) {
-    if (toGoalOf != target) {   // breadth-first distances to the target over the usable sub-cells
+  // target < 0: the first state (cell, step) where `parkHere` holds instead, found depth first in
+  // time (the latest step first, a wait before a move): the robot waits where that stays clear and
+  // steps aside where an obstacle comes, until it can park (a best-first search would spread over
+  // every cell and step before the last obstacle stops)
+  auto routeTo = [&](std::size_t self, std::vector<long>& route, long target, long horizon, std::size_t budget,
+                     const std::function<bool(long, long)>& parkHere = {}) {
+    const bool toTarget = target >= 0;
+    if (toTarget && toGoalOf != target) {   // breadth-first distances to the target over the usable sub-cells
       toGoal = graph::gridDistances(cols, rows, {target}, usableId);
       toGoalOf = target;
     }
+    auto h = [&](long v) { return toTarget ? static_cast<long>(toGoal[static_cast<std::size_t>(v)]) : 0L; };
+    // the priority of state (v, t) entered from u: A*'s f towards the target; else depth first
+    auto priority = [&](long v, long t, long u) { return toTarget ? t + h(v) : -2 * t + (v != u ? 1 : 0); };
     const long from = route.back(), t0 = static_cast<long>(route.size());
-    if (toGoal[static_cast<std::size_t>(from)] < 0) return false;
+    if (h(from) < 0) return false;
     auto cmp = [](const Node& a, const Node& b) { return a.f > b.f || (a.f == b.f && (a.t < b.t || (a.t == b.t && a.cell > b.cell))); };
     std::priority_queue<Node, std::vector<Node>, decltype(cmp)> open(cmp);
     std::unordered_map<long long, long long> parentOf;   // state → parent state
-    open.push({t0 + toGoal[static_cast<std::size_t>(from)], t0, from, -1});
+    open.push({priority(from, t0, from), t0, from, -1});
     long long reached = -1;
     std::size_t expanded = 0;
     while (!open.empty() && reached < 0) {
@@ -612,7 +638,7 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
       const long long me = key(n.t, n.cell);
       if (parentOf.count(me)) continue;
       parentOf[me] = n.parent;
-      if (n.cell == target && n.t > t0 - (from == target ? 1 : 0)) {
+      if (toTarget ? n.cell == target && n.t > t0 - (from == target ? 1 : 0) : n.t > t0 && parkHere(n.cell, n.t)) {
         reached = me;
         break;
       }
@@ -622,8 +648,8 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
         const int nc = d < 4 ? c + kDc[d] : c, nr = d < 4 ? r + kDr[d] : r;
         if (!usable(nc, nr)) continue;
         const long v = static_cast<long>(nr) * cols + nc;
-        if (toGoal[static_cast<std::size_t>(v)] < 0 || !allowed(n.t, n.cell, v, self) || parentOf.count(key(n.t + 1, v))) continue;
-        open.push({n.t + 1 + toGoal[static_cast<std::size_t>(v)], n.t + 1, v, me});
+        if (h(v) < 0 || !allowed(n.t, n.cell, v, self) || parentOf.count(key(n.t + 1, v)) || !escapable(n.t + 1, v, self)) continue;
+        open.push({priority(v, n.t + 1, n.cell), n.t + 1, v, me});
       }
     }
     if (reached < 0) return false;
@@ -651,13 +677,17 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
       }
       std::vector<long> cellsAt{s0};   // the route, from step 1
       auto search = [&](long target, long horizon, std::size_t budget) { return routeTo(i, cellsAt, target, horizon, budget); };
-      if (!search(goal, 8 + 3 * static_cast<long>(travel(i)) + 4 * static_cast<long>(k), 4'000'000)) return false;
+      // among moving obstacles a way may have to wait until an obstacle has passed: then up to the
+      // step the last obstacle stops, and a margin, beyond the usual bound
+      const long bound = 8 + 3 * static_cast<long>(travel(i)) + 4 * static_cast<long>(k);
+      if (!search(goal, bound, 4'000'000) && !(moving && search(goal, bound + lastStop + 64, 4'000'000))) return false;
       // the piece, in tour order: a move where it is free, else a few waits, else a way round; among
       // moving obstacles a cell no way reaches is left out
       for (long m = 1; m < pieceLen(p); ++m) {
         const long v = id(walk[static_cast<std::size_t>((pieceFirst[p] + m) % L)]);
-        const long t = static_cast<long>(cellsAt.size());
-        if (allowed(t, cellsAt.back(), v, i)) {
+        const long t = static_cast<long>(cellsAt.size()), u = cellsAt.back();
+        // a move to the next tour cell when it is a neighbour (after a cell left out it need not be)
+        if (std::abs(u % cols - v % cols) + std::abs(u / cols - v / cols) == 1 && allowed(t, u, v, i) && escapable(t + 1, v, i)) {
           cellsAt.push_back(v);
           continue;
         }
@@ -674,6 +704,10 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
         const auto lt = lastTaken.find(cell);   // robot i is not in it yet: every entry is another's
         return lt == lastTaken.end() || lt->second < from;
       };
+      // among moving obstacles, first the earliest (cell, step) it can reach and park in from then on,
+      // waiting or going elsewhere while obstacles pass (within the step the last one stops and a margin)
+      if (moving && !parkable(cellsAt.back(), static_cast<long>(cellsAt.size())))
+        routeTo(i, cellsAt, -1, std::max(static_cast<long>(cellsAt.size()), lastStop) + 64 + 4 * static_cast<long>(k), 400'000, parkable);
       if (!parkable(cellsAt.back(), static_cast<long>(cellsAt.size()))) {
         std::vector<long> near{cellsAt.back()};
         std::unordered_map<long, int> seen{{cellsAt.back(), 0}};
@@ -823,11 +857,21 @@ Plan MultiStcBalancedPlanner::plan(const PlanningContext& ctx, const ParamSet& p
   if (moving) {   // only routed moves can wait for and go round the obstacles: travel, whatever `travel` says
     std::vector<std::vector<CellIndex>> travelled;
     if (!travelRoutes(cells, walk, L, startCell, order, timing, travelled, skipped, stop, timedOut)) {
-      plan.status = timedOut ? PlanStatus::kTimeout : PlanStatus::kPartialCoverage;
-      plan.message = timedOut ? "stopped by the time limit while routing the robots (they stay at their starts)"
-                              : "no timing found that keeps every robot clear of the moving obstacles and of each other (the robots stay at their starts)";
-      stayAtStarts(problem, plan);
-      return plan;
+      if (timedOut) {
+        plan.status = PlanStatus::kTimeout;
+        plan.message = "stopped by the time limit while routing the robots (they stay at their starts)";
+        stayAtStarts(problem, plan);
+        return plan;
+      }
+      // no robot order gives every robot a way to its piece and a place to park clear of the
+      // obstacles: the team is planned by multi_st instead, whose robots step aside as obstacles come
+      // (staying at the starts, as before, let obstacles run into them)
+      MultiStPlanner online;
+      Plan fallback = online.plan(ctx, ParamSet(online.params(), {{"step", formatDouble(params.number("step"))}}, "multi_st"), stop);
+      fallback.statistics["split_multi_st"] = 1;
+      fallback.message = "no timing of the balanced pieces keeps every robot clear of the moving obstacles and of each other; planned by multi_st: " +
+                         fallback.message;
+      return fallback;
     }
     route.swap(travelled);
     split = "travel";
