@@ -42,8 +42,11 @@
 //    among them the travel split is used whatever `travel` says; every step and wait, each robot's
 //    first step and its parking for good are checked exactly against every obstacle (movesClearOf,
 //    the validator's own test). A tour sub-cell that no way reaches (an obstacle parked on it for
-//    good) is left out: status partial_coverage, statistic subcells_skipped. When no robot order
-//    gives every robot a route, the robots stay at their starts (partial_coverage).
+//    good) is left out: status partial_coverage, statistic subcells_skipped. Robots enter no cell
+//    from which the next step has no clear move or wait; a way to a piece may wait until the last
+//    obstacle stops; a robot parks at the first (cell, step) found depth first in time from which
+//    it stays clear for good. When no robot order gives every robot a route, multi_st plans the
+//    team (statistic split_multi_st): robots left at their starts were run into by the obstacles.
 //  * a team of equal discs: the sub-cells are sized for robots[0]; starts must lie in free
 //    mega-cells of one component (status invalid_start otherwise).
 #include <coverkit/planners/multi_stc.h>
@@ -574,11 +577,19 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
         if (j != self && !routed[j] && id(startCell[j]) == cell) return true;
     return false;
   };
-  // a step t → t + 1 from u to v (v == u: a wait)
+  // a step t → t + 1 from u to v (v == u: a wait); whether it is clear of the moving obstacles is
+  // kept (the same for every robot of the team, equal discs; the exact test is the searches' cost)
+  std::unordered_map<long long, char> clearOfObstacles;
   auto allowed = [&](long t, long u, long v, std::size_t self) {
     if (occupied(t + 1, v, self) || (v != u && (occupied(t, v, self) || occupied(t + 1, u, self)))) return false;
-    return !moving || timing.clear(self, timing.centre(cellOfId(u)), timing.centre(cellOfId(v)), static_cast<double>(t) * timing.step,
-                                   static_cast<double>(t + 1) * timing.step);
+    if (!moving) return true;
+    const long long move = (key(t, u) * 5) + (v == u ? 4 : v == u + 1 ? 0 : v == u - 1 ? 1 : v > u ? 2 : 3);
+    const auto known = clearOfObstacles.find(move);
+    if (known != clearOfObstacles.end()) return known->second != 0;
+    const bool clear = timing.clear(self, timing.centre(cellOfId(u)), timing.centre(cellOfId(v)), static_cast<double>(t) * timing.step,
+                                    static_cast<double>(t + 1) * timing.step);
+    clearOfObstacles.emplace(move, clear ? 1 : 0);
+    return clear;
   };
   // among moving obstacles: a robot in v at step t has a next step (a wait or a move); entering a
   // cell from which an obstacle leaves no way on would trap the robot there
@@ -680,7 +691,7 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
       // among moving obstacles a way may have to wait until an obstacle has passed: then up to the
       // step the last obstacle stops, and a margin, beyond the usual bound
       const long bound = 8 + 3 * static_cast<long>(travel(i)) + 4 * static_cast<long>(k);
-      if (!search(goal, bound, 4'000'000) && !(moving && search(goal, bound + lastStop + 64, 4'000'000))) return false;
+      if (!search(goal, bound, 4'000'000) && !(moving && search(goal, bound + lastStop + 64, 400'000))) return false;
       // the piece, in tour order: a move where it is free, else a few waits, else a way round; among
       // moving obstacles a cell no way reaches is left out
       for (long m = 1; m < pieceLen(p); ++m) {
@@ -691,7 +702,10 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
           cellsAt.push_back(v);
           continue;
         }
-        if (search(v, t + 64 + 4 * static_cast<long>(k), 200'000)) continue;
+        // once every obstacle has stopped, a cell one of them holds is held for good: no search
+        const PointD cv = timing.centre(cellOfId(v));
+        const bool heldForGood = moving && t >= lastStop && !timing.clear(i, cv, cv, static_cast<double>(t) * timing.step, HUGE_VAL);
+        if (!heldForGood && search(v, t + 64 + 4 * static_cast<long>(k), moving ? 50'000 : 200'000)) continue;
         if (!moving) return false;
         ++skipped;
       }
@@ -704,10 +718,6 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
         const auto lt = lastTaken.find(cell);   // robot i is not in it yet: every entry is another's
         return lt == lastTaken.end() || lt->second < from;
       };
-      // among moving obstacles, first the earliest (cell, step) it can reach and park in from then on,
-      // waiting or going elsewhere while obstacles pass (within the step the last one stops and a margin)
-      if (moving && !parkable(cellsAt.back(), static_cast<long>(cellsAt.size())))
-        routeTo(i, cellsAt, -1, std::max(static_cast<long>(cellsAt.size()), lastStop) + 64 + 4 * static_cast<long>(k), 400'000, parkable);
       if (!parkable(cellsAt.back(), static_cast<long>(cellsAt.size()))) {
         std::vector<long> near{cellsAt.back()};
         std::unordered_map<long, int> seen{{cellsAt.back(), 0}};
@@ -721,13 +731,18 @@ bool travelRoutes(const CellGrid& cells, const std::vector<CellIndex>& walk, lon
             seen[v] = 1;
             near.push_back(v);
             const std::vector<long> before = cellsAt;
-            if (search(v, static_cast<long>(cellsAt.size()) + 64 + 4 * static_cast<long>(k), 200'000) &&
+            if (search(v, static_cast<long>(cellsAt.size()) + 64 + 4 * static_cast<long>(k), moving ? 20'000 : 200'000) &&
                 parkable(cellsAt.back(), static_cast<long>(cellsAt.size())))
               parked = true;
             else
               cellsAt = before;
           }
         }
+        // among moving obstacles, where no cell nearby is clear for good once reached: the first
+        // (cell, step) found depth first in time from which it is, waiting or stepping aside while
+        // obstacles pass (within the step the last one stops and a margin)
+        if (!parked && moving)
+          parked = routeTo(i, cellsAt, -1, std::max(static_cast<long>(cellsAt.size()), lastStop) + 64 + 4 * static_cast<long>(k), 400'000, parkable);
         if (!parked) return false;
       }
       const long t = static_cast<long>(cellsAt.size());   // the step of the last entry

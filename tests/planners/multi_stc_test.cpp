@@ -298,7 +298,7 @@ TEST(MultiStc, PlansAmongMovingObstacles) {
   }
 }
 
-// Seeded scenarios among moving obstacles that pass through walls (another generator than
+// 16 seeded scenarios among moving obstacles that pass through walls (another generator than
 // team-check's: 2-8 robots, 3-10 obstacles of radius 0.2-0.8 at 0.3-2 m/s anywhere in the box,
 // r = 1/2 or 1): both team planners' plans valid under the team validator, and every move of a
 // timeline between neighbouring sub-cells or a wait (a tour cell left out once made
@@ -308,7 +308,7 @@ TEST(MultiStc, SeededScenariosAmongMovingObstaclesAreValid) {
   std::mt19937_64 rng(20261205);
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(rng() % 1000000) / 1e6; };
   int planned = 0;
-  for (int s = 0; s < 24; ++s) {
+  for (int s = 0; s < 16; ++s) {
     const int side = 12 + static_cast<int>(rng() % 13);
     std::vector<Ring> holes;
     for (int b = 0; b < 4; ++b) {   // square blocks on a lattice of 4 m, so they never overlap
@@ -354,5 +354,5 @@ TEST(MultiStc, SeededScenariosAmongMovingObstaclesAreValid) {
     }
     ++planned;
   }
-  EXPECT_GE(planned, 20);
+  EXPECT_GE(planned, 13);
 }
