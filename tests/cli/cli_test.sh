@@ -7,10 +7,8 @@
 # it into docs/bad-inputs.md.
 set -u
 CK="$1"; DATA="$2"; T="$3"
-rm -rf "$T"; mkdir -p "$T"
-fails=0; passes=0
-ok() { passes=$((passes + 1)); }
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+# shellcheck source=tests/cli/common.sh
+. "$(dirname "$0")/common.sh"
 TABLE="${COVERKIT_BAD_INPUTS_TABLE:-}"
 [ -n "$TABLE" ] && printf '| case | command | exit | message (first line of stderr) |\n|---|---|---|---|\n' > "$TABLE"
 
@@ -148,8 +146,6 @@ printf 'kind: decompositions\nholes: [2, x]\n' > "$T/cfg-dec-holes.yaml"
 expect_bad "decompositions config: holes" "cfg-dec-holes.yaml: holes: x: not a hole count" experiment run "$T/cfg-dec-holes.yaml" --out "$T/cfg-out"
 # experiments: configs (each would run the whole default experiment, or crash, before)
 cfg() { printf -- "$2" > "$T/cfg-$1.yaml"; echo "$T/cfg-$1.yaml"; }
-# rows of a results.csv for which a python condition on r (column name → text) holds
-csv_count() { python3 -c 'import csv, sys; print(sum(1 for r in csv.DictReader(open(sys.argv[1])) if eval(sys.argv[2])))' "$1" "$2"; }
 # a results.csv without its timing columns (names ending in _seconds, and peak_rss_mib)
 csv_untimed() { python3 -c 'import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))

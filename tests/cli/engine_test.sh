@@ -6,10 +6,8 @@
 # Usage: engine_test.sh COVERKIT WORKDIR
 set -u
 CK="$1"; T="$2"
-rm -rf "$T"; mkdir -p "$T"
-fails=0; passes=0
-ok() { passes=$((passes + 1)); }
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+# shellcheck source=tests/cli/common.sh
+. "$(dirname "$0")/common.sh"
 
 # The rows of a results.db without the timing columns, as text (python3's sqlite3, standard library).
 rows() {

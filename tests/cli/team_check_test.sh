@@ -7,12 +7,8 @@
 # Usage: team_check_test.sh COVERKIT WORKDIR
 set -u
 CK="$1"; T="$2"
-rm -rf "$T"; mkdir -p "$T"
-fails=0; passes=0
-ok() { passes=$((passes + 1)); }
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
-# rows of a results.csv for which a python condition on r (column name → text) holds
-csv_count() { python3 -c 'import csv, sys; print(sum(1 for r in csv.DictReader(open(sys.argv[1])) if eval(sys.argv[2])))' "$1" "$2"; }
+# shellcheck source=tests/cli/common.sh
+. "$(dirname "$0")/common.sh"
 
 # team-check on the first 96 seeded scenarios (81 among moving obstacles): every plan valid, every
 # reachable free sub-cell entered, the same bytes twice
