@@ -62,16 +62,28 @@ TEST(SmoothStc, WithoutPartialMegaCellsItIsStc) {
   w.regions.push_back(reg);
   const auto ctx = testing_helpers::contextFor(w, Rational(1, 4));
   const Plan stc = planners::runPlanner("stc", ctx, {{"tree", "kruskal_straight"}});   // smooth_stc's tree
-  const Plan kept = planners::runPlanner("smooth_stc", ctx, {{"corners", "keep"}});
+  const Plan kept = planners::runPlanner("smooth_stc", ctx, {{"corners", "keep"}, {"contours", "none"}});
   ASSERT_TRUE(testing_helpers::planIsValid(ctx, kept));
   EXPECT_EQ(testing_helpers::pathJsonOf(stc), testing_helpers::pathJsonOf(kept));
   EXPECT_EQ(kept.statistics.at("sweeps"), 0);
   // with corners filled: still valid, and it sweeps the wedges STC leaves at its turns
-  const Plan filled = planners::runPlanner("smooth_stc", ctx, {});
+  const Plan filled = planners::runPlanner("smooth_stc", ctx, {{"contours", "none"}});
   ASSERT_TRUE(testing_helpers::planIsValid(ctx, filled));
   EXPECT_GT(filled.statistics.at("corners_filled"), 0);
   EXPECT_GT(coverable(ctx, filled), coverable(ctx, stc));
   EXPECT_GT(coverable(ctx, filled), 0.999);
+  // the defaults: one pass along the walls' contour sweeps the wedges along the walls instead (not
+  // those at the lanes' turns beside the last column, 0.3 % here), no corner filled, and less
+  // turning than the fills
+  const Plan defaults = planners::runPlanner("smooth_stc", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, defaults));
+  EXPECT_EQ(defaults.statistics.at("contours_passed"), 1);
+  EXPECT_EQ(defaults.statistics.count("corners_filled"), 0u);
+  EXPECT_GT(coverable(ctx, defaults), coverable(ctx, stc));
+  EXPECT_GT(coverable(ctx, defaults), 0.995);
+  MetricOptions o;
+  EXPECT_LT(computeMetrics(ctx.problem, ctx.cells, defaults.paths, o).turningAngleDeg,
+            computeMetrics(ctx.problem, ctx.cells, filled.paths, o).turningAngleDeg);
 }
 
 TEST(SmoothStc, SweepsPartialMegaCellsExactlyAndCoversMoreThanStcAndFullStc) {
@@ -115,8 +127,9 @@ TEST(SmoothStc, SweepsPartialMegaCellsExactlyAndCoversMoreThanStcAndFullStc) {
 TEST(SmoothStc, EveryEntrySweepsAtLeastWhatTheParentsEntryDoes) {
   for (std::uint64_t seed = 11; seed <= 13; ++seed) {
     const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 12, 8), Rational(1, 4));
-    const Plan every = planners::runPlanner("smooth_stc", ctx, {});
-    const Plan parent = planners::runPlanner("smooth_stc", ctx, {{"entries", "parent"}});
+    // without the contour passes, which make some of the sweeps redundant either way
+    const Plan every = planners::runPlanner("smooth_stc", ctx, {{"contours", "none"}});
+    const Plan parent = planners::runPlanner("smooth_stc", ctx, {{"entries", "parent"}, {"contours", "none"}});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, parent));
     EXPECT_GE(every.statistics.at("sweeps"), parent.statistics.at("sweeps"));
     EXPECT_GE(every.statistics.at("partial_mega_cells_swept"), parent.statistics.at("partial_mega_cells_swept"));
@@ -212,7 +225,7 @@ TEST(SmoothStc, OnlineEqualsOfflineWithThePapersTree) {
     const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 10, 5), Rational(1, 4));
     // the offline defaults' straight tree and detours=needed are not the online robot's (it cannot
     // know the whole tour): the paper's tree and every detour
-    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
+    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}};
     const Plan offline = planners::runPlanner("smooth_stc", ctx, paperTree);
     const Plan online = planners::runPlanner("smooth_stc_online", ctx, {});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, online));
@@ -288,7 +301,7 @@ TEST(SmoothStc, JoinsAPocketThatPartialMegaCellsCutOff) {
   const auto ctx = testing_helpers::contextFor(w, Rational(1, 4), Point{Rational(1, 4), Rational(1, 4)});
   // the paper's tree, every detour and no travel to rooms (which would reach the pocket as well):
   // the pocket joined by the sweep is what is measured, beside the online robot's
-  const std::map<std::string, std::string> base{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}};
+  const std::map<std::string, std::string> base{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}};
   auto with = [&](std::map<std::string, std::string> extra) {
     extra.insert(base.begin(), base.end());
     return extra;
