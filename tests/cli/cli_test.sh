@@ -281,7 +281,7 @@ expect_bad "config unknown planner" "cvs-bad1.yaml: planners: unknown planner 'n
 printf 'planners: [stc, "smooth_stc:corners=round"]\n' > "$T/cvs-bad5.yaml"; printf 'planners: ["smooth_stc:corners"]\n' > "$T/cvs-bad6.yaml"
 printf 'planners: ["stc:tree=bfs"]\nradii: [0.5]\nworlds: {count: 1, width: 8, height: 8, obstacles: 2}\n' > "$T/cvs-param.yaml"
 "$CK" experiment coverage-vs-size --config "$T/cvs-param.yaml" --out "$T/cvs-param" > /dev/null && grep -q ',worlds,1,radius,0.5,stc:tree=bfs,0,0.5,default,exact_solution,1,' "$T/cvs-param/results.csv" && ok || bad "planner with parameters in a config: $(cat "$T/cvs-param/results.csv" 2>/dev/null)"
-expect_bad "config planner parameter" "cvs-bad5.yaml: planners: 'smooth_stc:corners=round': --param: corners=round: must be one of fill|keep" experiment coverage-vs-size --config "$T/cvs-bad5.yaml" --out "$T/out.json"
+expect_bad "config planner parameter" "cvs-bad5.yaml: planners: 'smooth_stc:corners=round': --param: corners=round: must be one of auto|fill|keep" experiment coverage-vs-size --config "$T/cvs-bad5.yaml" --out "$T/out.json"
 expect_bad "config planner parameter syntax" "cvs-bad6.yaml: planners: 'smooth_stc:corners': parameters are key=value" experiment coverage-vs-size --config "$T/cvs-bad6.yaml" --out "$T/out.json"
 expect_bad "config syntax" "cvs-bad2.yaml: line 2: YAML does not parse" experiment coverage-vs-size --config "$T/cvs-bad2.yaml" --out "$T/out.json"
 expect_bad "config radius" "cvs-bad3.yaml: radii: -1: must be > 0" experiment coverage-vs-size --config "$T/cvs-bad3.yaml" --out "$T/out.json"
