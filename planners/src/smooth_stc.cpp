@@ -93,6 +93,7 @@
 #include <coverkit/planners/smooth_stc.h>
 
 #include <coverkit/geometry/cspace.h>
+#include <coverkit/geometry/fillet.h>
 #include <coverkit/geometry/parallel.h>
 #include <coverkit/geometry/validate.h>
 
@@ -163,7 +164,7 @@ bool pieceClear(ClearanceChecker& check, const PathSegment& p) {
 }
 
 /// Unit heading of a piece at its start or end.
-PointD headingOf(const PathSegment& p, bool atEnd) {
+PointD unitHeading(const PathSegment& p, bool atEnd) {
   double x, y;
   if (p.kind == PathSegment::Kind::kLine) {
     x = p.to.x - p.from.x, y = p.to.y - p.from.y;
@@ -264,7 +265,7 @@ public:
         const PointD q = pointAlong(p, (k + 0.5) * len / n, len);
         PathSegment at = p;
         at.from = q;
-        const PointD t = headingOf(at, false);
+        const PointD t = unitHeading(at, false);
         for (double o : {-0.75, -0.375, 0.0, 0.375, 0.75})
           if (!covered(PointD{q.x - o * r_ * t.y, q.y + o * r_ * t.x})) area += len / n * 0.375 * r_;
       }
@@ -1145,7 +1146,7 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
       take(i++);
       continue;
     }
-    const PointD u = headingOf(prev, true), v = headingOf(next, false);
+    const PointD u = unitHeading(prev, true), v = unitHeading(next, false);
     if (u.x * v.x + u.y * v.y > std::cos(175.0 * M_PI / 180)) {
       take(i++);
       continue;
@@ -1229,13 +1230,6 @@ std::vector<std::vector<PathSegment>> contourLoops(const PlanningContext& ctx, C
   return out;
 }
 
-PathSegment reversed(const PathSegment& p) {
-  PathSegment q = p;
-  std::swap(q.from, q.to);
-  q.ccw = !p.ccw;
-  return q;
-}
-
 /// Each loop spliced into the path at the joint and loop vertex, in the direction, that add the
 /// least turning (a joint on the loop in the loop's direction adds only the loop's own turning;
 /// elsewhere a straight line there and back, checked exactly). Chosen in doubles, candidates within
@@ -1261,11 +1255,11 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
     std::vector<Cand> cand;
     auto consider = [&](std::size_t j, std::size_t v) {
       const PointD c = path.segments[j].from, q = pc[v].from;
-      const PointD hin = headingOf(path.segments[j - 1], true), hout = headingOf(path.segments[j], false);
+      const PointD hin = unitHeading(path.segments[j - 1], true), hout = unitHeading(path.segments[j], false);
       const double d = std::hypot(q.x - c.x, q.y - c.y);
       for (bool fwd : {true, false}) {
-        const PointD l0 = fwd ? headingOf(pc[v], false) : PointD{-headingOf(pc[(v + n - 1) % n], true).x, -headingOf(pc[(v + n - 1) % n], true).y};
-        const PointD l1 = fwd ? headingOf(pc[(v + n - 1) % n], true) : PointD{-headingOf(pc[v], false).x, -headingOf(pc[v], false).y};
+        const PointD l0 = fwd ? unitHeading(pc[v], false) : PointD{-unitHeading(pc[(v + n - 1) % n], true).x, -unitHeading(pc[(v + n - 1) % n], true).y};
+        const PointD l1 = fwd ? unitHeading(pc[(v + n - 1) % n], true) : PointD{-unitHeading(pc[v], false).x, -unitHeading(pc[v], false).y};
         double t[4];
         int k = 0;
         if (d == 0) {
@@ -1309,7 +1303,7 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
       std::vector<PathSegment> ins;
       if (line) ins.push_back(PathSegment::line(c, q));
       for (std::size_t i = 0; i < n; ++i)
-        ins.push_back(x.fwd ? pc[(x.v + i) % n] : reversed(pc[(x.v + n - 1 - i) % n]));
+        ins.push_back(x.fwd ? pc[(x.v + i) % n] : coverkit::reversedPiece(pc[(x.v + n - 1 - i) % n]));
       if (line) ins.push_back(PathSegment::line(q, c));
       path.segments.insert(path.segments.begin() + static_cast<std::ptrdiff_t>(x.j), ins.begin(), ins.end());
       spliced = true;
@@ -1317,14 +1311,8 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
     if (spliced) ++done; else ++left;
     double turn = 0;   // the loop's own turning: its joints and its arcs
     for (std::size_t i = 0; i < n; ++i) {
-      turn += ang(headingOf(pc[i], true), headingOf(pc[(i + 1) % n], false));
-      if (pc[i].kind == PathSegment::Kind::kArc) {
-        double a = std::atan2(pc[i].to.y - pc[i].center.y, pc[i].to.x - pc[i].center.x) -
-                   std::atan2(pc[i].from.y - pc[i].center.y, pc[i].from.x - pc[i].center.x);
-        if (!pc[i].ccw) a = -a;
-        while (a < 0) a += 2 * M_PI;
-        turn += a;
-      }
+      turn += std::abs(coverkit::turnAt(pc[i], pc[(i + 1) % n]));
+      if (pc[i].kind == PathSegment::Kind::kArc) turn += pc[i].length() / std::hypot(pc[i].from.x - pc[i].center.x, pc[i].from.y - pc[i].center.y);
     }
     plan.statistics["contours_turning_deg"] += turn * 180 / M_PI;
   }
