@@ -161,12 +161,13 @@ const char* toString(TreeStrategy s) {
     case TreeStrategy::kDfsCcw: return "dfs_ccw";
     case TreeStrategy::kBfs: return "bfs";
     case TreeStrategy::kKruskalStraight: return "kruskal_straight";
+    case TreeStrategy::kLongestRuns: return "longest_runs";
   }
   return "?";
 }
 
 bool parseTreeStrategy(const std::string& text, TreeStrategy& out) {
-  for (TreeStrategy s : {TreeStrategy::kDfsCcw, TreeStrategy::kBfs, TreeStrategy::kKruskalStraight})
+  for (TreeStrategy s : {TreeStrategy::kDfsCcw, TreeStrategy::kBfs, TreeStrategy::kKruskalStraight, TreeStrategy::kLongestRuns})
     if (text == toString(s)) {
       out = s;
       return true;
@@ -174,7 +175,7 @@ bool parseTreeStrategy(const std::string& text, TreeStrategy& out) {
   return false;
 }
 
-std::vector<std::string> treeStrategyNames() { return {"dfs_ccw", "bfs", "kruskal_straight"}; }
+std::vector<std::string> treeStrategyNames() { return {"dfs_ccw", "bfs", "kruskal_straight", "longest_runs"}; }
 
 SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s, int rootFirst) {
   switch (s) {
@@ -183,6 +184,7 @@ SpanningTree buildTree(const GridGraph& g, int root, TreeStrategy s, int rootFir
     // Boost.Graph versions give the same trees (tests/graph) and stay in the benchmark.
     case TreeStrategy::kBfs: return bfsTreePlain(g, root);
     case TreeStrategy::kKruskalStraight: return kruskalTreePlain(g, root);
+    case TreeStrategy::kLongestRuns: return longestRunsTree(g, root);
   }
   return dfsCcwTree(g, root);
 }
@@ -346,6 +348,62 @@ SpanningTree kruskalTreePlain(const GridGraph& g, int root) {
       mask[static_cast<std::size_t>(u)] |= static_cast<std::uint8_t>(1u << opposite(d));
     }
   return orient(g, root, mask);
+}
+
+SpanningTree kruskalTreeWeighted(const GridGraph& g, int root, const std::function<int(int v, int d)>& weight) {
+  if (!validRoot(g, root)) return emptyTree(g, root);
+  const std::vector<std::uint8_t> nb = neighbourMasks(g);
+  const Step step(g);
+  struct Edge {
+    int weight, v, d;
+  };
+  std::vector<Edge> edges;
+  for (int d : {kEast, kNorth})
+    for (int v = 0; v < static_cast<int>(g.size()); ++v)
+      if (nb[static_cast<std::size_t>(v)] >> d & 1) edges.push_back({weight(v, d), v, d});
+  std::stable_sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.weight < b.weight; });
+  std::vector<int> parent(g.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+      parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      x = parent[static_cast<std::size_t>(x)];
+    }
+    return x;
+  };
+  std::vector<std::uint8_t> mask(g.size(), 0);
+  for (const Edge& e : edges) {
+    const int u = step(e.v, e.d);
+    const int ra = find(e.v), rb = find(u);
+    if (ra == rb) continue;
+    parent[static_cast<std::size_t>(rb)] = ra;
+    mask[static_cast<std::size_t>(e.v)] |= static_cast<std::uint8_t>(1u << e.d);
+    mask[static_cast<std::size_t>(u)] |= static_cast<std::uint8_t>(1u << opposite(e.d));
+  }
+  return orient(g, root, mask);
+}
+
+SpanningTree longestRunsTree(const GridGraph& g, int root) {
+  if (!validRoot(g, root)) return emptyTree(g, root);
+  const std::vector<std::uint8_t> nb = neighbourMasks(g);
+  const Step step(g);
+  // run[d][v]: the length of the run along d's axis that v lies in (1 for a node alone)
+  std::vector<int> run[2] = {std::vector<int>(g.size(), 0), std::vector<int>(g.size(), 0)};
+  for (int axis : {kEast, kNorth})
+    for (int v = 0; v < static_cast<int>(g.size()); ++v) {
+      if (!g.active[static_cast<std::size_t>(v)] || run[axis][static_cast<std::size_t>(v)]) continue;
+      if (nb[static_cast<std::size_t>(v)] >> opposite(axis) & 1) continue;   // not the run's first node
+      std::vector<int> nodes{v};
+      while (nb[static_cast<std::size_t>(nodes.back())] >> axis & 1) nodes.push_back(step(nodes.back(), axis));
+      for (int u : nodes) run[axis][static_cast<std::size_t>(u)] = static_cast<int>(nodes.size());
+    }
+  // a node prefers the vertical when its column run is more than twice its row run, else the
+  // horizontal (kruskal_straight's); an edge weighs the count of its ends that prefer the other axis
+  auto prefers = [&](int v, int axis) {
+    const bool vertical = run[kNorth][static_cast<std::size_t>(v)] > 2 * run[kEast][static_cast<std::size_t>(v)];
+    return vertical == (axis == kNorth);
+  };
+  return kruskalTreeWeighted(g, root, [&](int v, int d) { return !prefers(v, d) + !prefers(step(v, d), d); });
 }
 
 }  // namespace coverkit::graph

@@ -34,11 +34,34 @@
 //    * pockets=join: free mega-cells cut off from the tree by partial ones are toured with their
 //      own tree, entered from a sweep that crossed the run to them, as if the run were a tree edge;
 //    * tips are cut: where U ∩ C-free narrows to a point its boundary reverses (a spike); it is cut
-//      straight across where the two sides are r/16 apart.
+//      straight across where the two sides are r/16 apart. A tip is any turn of more than 150°
+//      (a reversal by docs/metrics.md): at 175°, the first rule, lanes that meet a contour at a
+//      grazing angle (a 155°-173° turn into the contour) were left as reversals.
+//  - No reversal that is only rounding (ours): a sliver (a line shorter than 10^-9 r, left where two
+//    pieces computed apart meet an ulp away) has a direction that is noise and turned a straight
+//    joint into two right angles or a reversal (and hid real reversals as two right angles); it is
+//    merged into a neighbouring line, or stepped over between two arcs (the validator's continuity
+//    tolerance is 10^-9 and it checks the step). A loop spliced at a joint an ulp from its vertex is
+//    spliced as at that vertex (the line there and back would have a direction that is noise, and
+//    made the splice choose the loop's direction at random). A spur (a line back along the one
+//    before it) whose stretch beyond the nearer end other pieces sweep is cut off.
+//  - Gaps are left by default (`gaps=leave`; `gaps=visit`, the rule before): a gap's visit is a
+//    dead end left the way it was entered, a reversal, which the paper's promise of paths without
+//    reversing excludes. On coverage-vs-complexity's 204 worlds the visits added 0.01 points of
+//    the coverable region and all of the 0.07 reversals a plan that were left; for large robots
+//    (r = 1/40 of the width among 10-20 obstacles of 1-2 m) 0.17 points and 0.37 reversals a plan.
 //  - Fewer turns (our defaults; the paper's tree and every detour stay reachable with
 //    `tree=dfs_ccw;detours=every`): the paper promises paths no longer than Full-STC's, and turning
-//    is what costs a real robot time. The tree is `kruskal_straight` (every row of free mega-cells
-//    one straight branch): the sweep at the end of a branch facing a partial mega-cell then goes
+//    is what costs a real robot time. The tree has long straight branches (`tree=auto`): of
+//    `kruskal_straight` (every row of free mega-cells one straight branch), its columns-first twin
+//    and `longest_runs` (columns where a column run is more than twice the row run: a strip along a
+//    side wall is one branch, not a comb of short rows), the one whose tour turns least, counted on
+//    the tree (a right angle at each corner of a node whose two arms there are both or neither tree
+//    edges). On ros/grid.yaml at r = 0.25 that takes the turning from 10,579° to 3,298°; on the
+//    seeded worlds 0.2-5 % (6 worlds per count of 2, 10, 25 obstacles); `kruskal_straight` alone was
+//    the default before. A tree weighted against branches that pass beside partial mega-cells (so
+//    that they end at them) was tried and turned 21 % more on a 25-obstacle world: more, shorter
+//    branches. The sweep at the end of a branch facing a partial mega-cell goes
 //    straight on from the tour's lane, round the contour and straight back, and adds no corner. Any
 //    other sweep leaves the tour and comes back (two corners, 180° more turning): with
 //    `detours=needed` it is made only where it sweeps at least r² that the tour, the branch-end
@@ -142,6 +165,12 @@ std::vector<ParamSpec> entryParam() {
 
 /// ε + δ: ε a power of two at least the C-space's approximation bound (1e-6 of the extent, see
 /// CSpace), δ a power of two, 2^-36 of the extent.
+/// Two points closer than this are one joint: the path steps from one to the other without a
+/// piece between (the validator's continuity tolerance is 10^-9 and it checks such a step exactly;
+/// here only rounding, an ulp or so, is that close). A piece so short would have a direction that
+/// is noise, a turn of up to 180° at each end for the metrics and for a robot.
+constexpr double kJointGap = 1e-10;
+
 Rational slackOf(const Workspace& w) {
   const Box b = w.bbox();
   const double extent = std::max(std::max(Rational(b.xmax - b.xmin).get_d(), Rational(b.ymax - b.ymin).get_d()), 1e-9);
@@ -1033,13 +1062,17 @@ public:
     for (std::size_t i = 0; i < boxes.size(); ++i) each(boxes[i], [&](std::size_t c) { pieces_[fill[c]++] = i; });
   }
   bool covered(const Path& path, PointD w) const {
+    return coveredExcept(path, w, {});
+  }
+  /// covered(), by the pieces not marked in `skip` (empty: none is).
+  bool coveredExcept(const Path& path, PointD w, const std::vector<std::uint8_t>& skip) const {
     if (!(w.x >= x0_ && w.y >= y0_) || pieces_.empty()) return false;
     const long bx = static_cast<long>((w.x - x0_) / cell_), by = static_cast<long>((w.y - y0_) / cell_);
     if (bx >= nx_ || by >= ny_) return false;
     const std::size_t c = static_cast<std::size_t>(by * nx_ + bx);
     const double limit = r_ * (1 + 1e-9);
     for (std::size_t k = start_[c]; k < start_[c + 1]; ++k)
-      if (withinReach(path.segments[pieces_[k]], w, limit)) return true;
+      if ((skip.empty() || !skip[pieces_[k]]) && withinReach(path.segments[pieces_[k]], w, limit)) return true;
     return false;
   }
 
@@ -1121,7 +1154,8 @@ void fillCorners(const PlanningContext& ctx, ClearanceChecker& check, Path& path
 
 /// Cuts the tips of thin fingers. Where U ∩ C-free narrows to a point (an obstacle edge almost
 /// parallel to a lane, or a contour that touches the lane), its boundary runs in along one side and
-/// back along the other, turning by 180° at the tip: a reversing spike. The tip is cut where the two
+/// back along the other, turning by 180° at the tip: a reversing spike; so does a lane that meets a
+/// contour at a grazing angle. Any turn of more than 150° is a tip. The tip is cut where the two
 /// sides are w = r/16 apart (found by stepping back s = w, 2w, … ≤ 4r along both), with a straight
 /// cut across; the cut and the two shortened pieces are checked exactly, else the tip stays
 /// (`tips_left`). The robot at the cut still sweeps r beyond it, so little of the finger is lost.
@@ -1151,7 +1185,7 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
       continue;
     }
     const PointD u = unitHeading(prev, true), v = unitHeading(next, false);
-    if (u.x * v.x + u.y * v.y > std::cos(175.0 * M_PI / 180)) {
+    if (u.x * v.x + u.y * v.y >= std::cos(150.0 * M_PI / 180)) {   // not a reversal (metrics.h)
       take(i++);
       continue;
     }
@@ -1191,6 +1225,134 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
   plan.statistics["tips_left"] = static_cast<double>(left);
 }
 
+
+/// Spurs: a line X → T followed by a line T → Y back along it (a dead end left the way it was
+/// entered: a room's or a sweep's way that starts where the tour turned, a gap's visit), a reversal
+/// the robot stops and turns 180° for. Where what the stretch beyond the nearer end (X, or Y) sweeps
+/// is swept by other pieces too (samples every r/4 along it at five offsets across and three beyond
+/// T, in doubles: a gap's dead end is not, by the gap rule), and the turn that then takes its place
+/// at the nearer end is no reversal, the stretch is left out: X → Y, one line on (checked exactly). Pieces of any spur never count as covering
+/// another's (so no two spurs are dropped for each other). Counted in `spurs_trimmed`.
+void trimSpurs(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
+  const double r = ctx.problem.robots.at(0).radius.get_d(), tiny = 1e-9 * r;
+  std::vector<PathSegment>& g = path.segments;
+  auto heading = [](const PathSegment& p) { return PointD{p.to.x - p.from.x, p.to.y - p.from.y}; };
+  auto spurAt = [&](std::size_t i) {   // the joint between g[i - 1] and g[i]
+    const PathSegment &a = g[i - 1], &b = g[i];
+    if (a.kind != PathSegment::Kind::kLine || b.kind != PathSegment::Kind::kLine) return false;
+    const PointD u = heading(a), v = heading(b);
+    const double lu = std::hypot(u.x, u.y), lv = std::hypot(v.x, v.y);
+    if (lu < tiny || lv < tiny) return false;
+    // opposite and on one line (up to rounding)
+    return u.x * v.x + u.y * v.y < -(1 - 1e-12) * lu * lv;
+  };
+  std::vector<std::size_t> joints;
+  std::vector<std::uint8_t> skip(g.size(), 0);
+  for (std::size_t i = 1; i < g.size(); ++i)
+    if (spurAt(i)) joints.push_back(i), skip[i - 1] = skip[i] = 1;
+  if (joints.empty()) {
+    plan.statistics["spurs_trimmed"] = 0;
+    return;
+  }
+  const SegmentBuckets index(path, r);
+  std::vector<std::uint8_t> drop(g.size(), 0);
+  std::size_t trimmed = 0;
+  for (std::size_t i : joints) {
+    if (drop[i - 1] || drop[i]) continue;
+    PathSegment &a = g[i - 1], &b = g[i];
+    const PointD X = a.from, T = a.to, Y = b.to;
+    const bool shortIn = std::hypot(X.x - T.x, X.y - T.y) <= std::hypot(Y.x - T.x, Y.y - T.y);
+    const PointD E = shortIn ? X : Y;   // the stretch T..E is left out; the line on starts (ends) at E
+    const PathSegment stay = PathSegment::line(X, Y);
+    const double len = std::hypot(E.x - T.x, E.y - T.y);
+    const PointD t{(E.x - T.x) / len, (E.y - T.y) / len};
+    auto ok = [&](PointD q) { return withinReach(stay, q, r * (1 - 1e-6)) || index.coveredExcept(path, q, skip); };
+    bool covered = true;
+    const int n = std::max(1, static_cast<int>(std::ceil(len / (r / 4))));
+    for (int k = 0; covered && k <= n; ++k) {
+      const PointD q{T.x + t.x * len * k / n, T.y + t.y * len * k / n};
+      for (double o : {-0.75, -0.375, 0.0, 0.375, 0.75}) covered = covered && ok(PointD{q.x - o * r * t.y, q.y + o * r * t.x});
+    }
+    for (double o : {-0.5, 0.0, 0.5}) covered = covered && ok(PointD{T.x - t.x * r * 0.75 - o * r * t.y, T.y - t.y * r * 0.75 + o * r * t.x});
+    // the turn at E, onto the line on (off it): 180° less the turn there was; not a reversal. A
+    // spur retraced to where it began (X = Y, up to rounding) goes: the turn is then the one
+    // between the pieces before and after it.
+    const PointD along{(Y.x - X.x), (Y.y - X.y)};
+    const double la = std::hypot(along.x, along.y);
+    const bool whole = la < tiny;
+    const double cosLimit = std::cos(150.0 * M_PI / 180);
+    if (whole) {
+      if (i >= 2 && i + 1 < g.size()) {
+        const PointD h = unitHeading(g[i - 2], true), k = unitHeading(g[i + 1], false);
+        if (h.x * k.x + h.y * k.y < cosLimit) continue;
+      }
+    } else if (shortIn ? i >= 2 : i + 1 < g.size()) {
+      const PointD h = shortIn ? unitHeading(g[i - 2], true) : unitHeading(g[i + 1], false);
+      if ((h.x * along.x + h.y * along.y) / la < cosLimit) continue;
+    }
+    if (!covered || !pieceClear(check, stay)) continue;
+    a = stay;
+    drop[i] = 1;
+    drop[i - 1] = whole;   // the path's joint then steps from X to Y (under 10^-9 r, checked above)
+    ++trimmed;
+  }
+  std::vector<PathSegment> out;
+  out.reserve(g.size());
+  for (std::size_t i = 0; i < g.size(); ++i)
+    if (!drop[i]) out.push_back(g[i]);
+  g.swap(out);
+  plan.statistics["spurs_trimmed"] = static_cast<double>(trimmed);
+}
+
+/// Slivers: lines shorter than 10^-9 r between two pieces, left where two pieces computed apart
+/// meet (a sweep's end rounded from its exact point beside the lane it joins, an ulp away). Their
+/// direction is noise: a heading change of up to 180° at each end that the robot would stop and
+/// turn for (a reversal on the metrics). Each is merged into the line before it (that line then
+/// ends where the sliver did), else into the line after it; the merged line is checked exactly.
+/// One between two arcs, at most kJointGap long, goes: the joint steps over it. Else it stays
+/// (`slivers_left`).
+void dropSlivers(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
+  const double tiny = 1e-9 * ctx.problem.robots.at(0).radius.get_d();
+  std::vector<PathSegment>& in = path.segments;
+  std::vector<PathSegment> out;
+  out.reserve(in.size());
+  std::size_t merged = 0, left = 0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const PathSegment& g = in[i];
+    const bool sliver = g.kind == PathSegment::Kind::kLine && !(g.from.x == g.to.x && g.from.y == g.to.y) && g.length() < tiny && !out.empty() && i + 1 < in.size();
+    if (!sliver) {
+      out.push_back(g);
+      continue;
+    }
+    PathSegment& prev = out.back();
+    if (prev.kind == PathSegment::Kind::kLine && prev.length() > tiny) {
+      const PathSegment longer = PathSegment::line(prev.from, g.to);
+      if (pieceClear(check, longer)) {
+        prev = longer;
+        ++merged;
+        continue;
+      }
+    }
+    PathSegment& next = in[i + 1];
+    if (next.kind == PathSegment::Kind::kLine && next.length() > tiny) {
+      const PathSegment longer = PathSegment::line(g.from, next.to);
+      if (pieceClear(check, longer)) {
+        next = longer;
+        ++merged;
+        continue;
+      }
+    }
+    if (g.length() <= kJointGap && pieceClear(check, g)) {   // between two arcs: the joint steps over it
+      ++merged;
+      continue;
+    }
+    ++left;
+    out.push_back(g);
+  }
+  in.swap(out);
+  plan.statistics["slivers_merged"] = static_cast<double>(merged);
+  plan.statistics["slivers_left"] = static_cast<double>(left);
+}
 
 /// The map's vertices up to which contours=auto passes the contours: the whole map's C-space they
 /// need costs about 0.5 s at 9,000 pieces and 8 s at 90,000 (a 10^6-pixel map), more than the rest
@@ -1267,7 +1429,8 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
     auto consider = [&](std::size_t j, std::size_t v) {
       const PointD c = path.segments[j].from, q = pc[v].from;
       const PointD hin = unitHeading(path.segments[j - 1], true), hout = unitHeading(path.segments[j], false);
-      const double d = std::hypot(q.x - c.x, q.y - c.y);
+      double d = std::hypot(q.x - c.x, q.y - c.y);
+      if (d <= kJointGap) d = 0;   // the same point up to rounding: no line, whose direction would be noise
       for (bool fwd : {true, false}) {
         const PointD l0 = fwd ? unitHeading(pc[v], false) : PointD{-unitHeading(pc[(v + n - 1) % n], true).x, -unitHeading(pc[(v + n - 1) % n], true).y};
         const PointD l1 = fwd ? unitHeading(pc[(v + n - 1) % n], true) : PointD{-unitHeading(pc[v], false).x, -unitHeading(pc[v], false).y};
@@ -1310,8 +1473,8 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
     for (std::size_t k = 0; k < cand.size() && k < 64 && !spliced; ++k) {
       const Cand& x = cand[k];
       const PointD c = path.segments[x.j].from, q = pc[x.v].from;
-      const bool line = !(q.x == c.x && q.y == c.y);
-      if (line && !check.clear(c, q)) continue;
+      const bool line = std::hypot(q.x - c.x, q.y - c.y) > kJointGap;
+      if (!(q.x == c.x && q.y == c.y) && !check.clear(c, q)) continue;   // a line, or the joint's step (validate.h)
       std::vector<PathSegment> ins;
       if (line) ins.push_back(PathSegment::line(c, q));
       for (std::size_t i = 0; i < n; ++i)
@@ -1359,7 +1522,9 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   if (!loops.start.empty() && !loops.others.empty()) spliceLoops(ctx, check, loops.others, path, plan, true);
   refiner.report(plan);
   if (sensor) plan.statistics["obstacle_sensor_queries"] = static_cast<double>(sensor->queries());
+  dropSlivers(ctx, check, path, plan);
   cutTips(ctx, check, path, plan);
+  trimSpurs(ctx, check, path, plan);
   const std::string corners = params.text("corners");
   if (corners == "fill" || (corners == "auto" && loops.start.empty())) fillCorners(ctx, check, path, plan);
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());
@@ -1381,7 +1546,13 @@ std::string SmoothStcPlanner::description() const {
 std::vector<ParamSpec> SmoothStcPlanner::params() const {
   std::vector<ParamSpec> p = StcSkeleton::params();
   for (ParamSpec& e : p)
-    if (e.name == "tree") e.defaultValue = "kruskal_straight";  // long straight branches: fewer turns (docs/smooth-stc.md)
+    if (e.name == "tree") {   // long straight branches: fewer turns (docs/smooth-stc.md)
+      e.defaultValue = "auto";
+      e.range += "|longest_runs|auto";
+      e.help += "; longest_runs: kruskal_straight with vertical branches where a column run of free mega-cells is more "
+                "than twice as long as the row run; auto (Smooth-STC's default): whichever of kruskal_straight and "
+                "longest_runs (and kruskal_straight's columns-first twin) the tour turns least around";
+    }
   for (const ParamSpec& e : entryParam()) {
     p.push_back(e);
     if (e.name == "corners") {   // the contour passes sweep most corners' wedges: see the citation block
@@ -1393,9 +1564,10 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
   p.push_back({"rooms", ParamType::kChoice, "travel", "travel|leave",
                "free mega-cells that no tour or sweep reaches (behind a door narrower than a mega-cell): travelled to "
                "along free sub-cells and toured with their own trees (travel), or left (leave, the paper's)"});
-  p.push_back({"gaps", ParamType::kChoice, "visit", "visit|leave",
+  p.push_back({"gaps", ParamType::kChoice, "leave", "leave|visit",
                "with rooms=travel, free sub-cells the path still leaves uncovered (between obstacles closer than a "
-               "mega-cell): travelled to and toured depth-first, each group from its nearest sub-cell (visit), or left"});
+               "mega-cell): travelled to and toured depth-first, each group from its nearest sub-cell, each dead end "
+               "left the way it was entered, a reversal (visit), or left (leave)"});
   p.push_back({"contours", ParamType::kChoice, "auto", "auto|pass|none",
                "one pass along every boundary loop of the start's component of C-free (the walls' and each obstacle's "
                "C-space contour), spliced into the path where it adds the least turning, counted before the detours are "
@@ -1430,6 +1602,35 @@ void SmoothStcPlanner::refinePath(const PlanningContext& ctx, const std::vector<
 }
 
 std::string SmoothStcPlanner::coverageClaim() const { return kClaim; }
+
+namespace {
+
+/// The right-angle turns of the circumnavigation around `t`: at each corner of each node where its
+/// two arms there are both tree edges (a concave corner of the tour) or neither is (a convex one);
+/// where one is, the tour goes straight on.
+std::size_t tourTurns(const graph::GridGraph& g, const graph::SpanningTree& t) {
+  std::size_t n = 0;
+  for (std::size_t v = 0; v < g.size(); ++v) {
+    if (!t.contains(static_cast<int>(v))) continue;
+    const unsigned m = t.edges[v];
+    for (int d = 0; d < 4; ++d) n += (m >> d & 1) == (m >> ((d + 1) & 3) & 1);
+  }
+  return n;
+}
+
+}  // namespace
+
+graph::SpanningTree SmoothStcPlanner::growTree(const graph::GridGraph& g, int root, const ParamSet& params, int rootFirst) const {
+  if (params.text("tree") != "auto") return StcSkeleton::growTree(g, root, params, rootFirst);
+  // kruskal_straight, its columns-first twin, longest_runs: the first that turns least
+  std::array<graph::SpanningTree, 3> trees{graph::buildTree(g, root, graph::TreeStrategy::kKruskalStraight),
+                                           graph::kruskalTreeWeighted(g, root, [](int, int d) { return d == graph::kEast; }),
+                                           graph::buildTree(g, root, graph::TreeStrategy::kLongestRuns)};
+  std::size_t best = 0, turns = tourTurns(g, trees[0]);
+  for (std::size_t i = 1; i < trees.size(); ++i)
+    if (const std::size_t t = tourTurns(g, trees[i]); t < turns) best = i, turns = t;
+  return std::move(trees[best]);
+}
 
 std::string SmoothStcOnlinePlanner::description() const {
   return "Smooth-STC (Pham, Moore & Truong 2019), online: the Spiral-STC robot senses its four neighbouring "

@@ -59,7 +59,7 @@ TEST(SpanningTree, BoostGraphAndPlainArraysGiveTheSameTree) {
 TEST(SpanningTree, EveryStrategySpansTheRootsComponent) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const GridGraph g = randomGrid(31, 12, seed);
-    for (TreeStrategy s : {TreeStrategy::kDfsCcw, TreeStrategy::kBfs, TreeStrategy::kKruskalStraight})
+    for (TreeStrategy s : {TreeStrategy::kDfsCcw, TreeStrategy::kBfs, TreeStrategy::kKruskalStraight, TreeStrategy::kLongestRuns})
       EXPECT_TRUE(isSpanningTree(g, buildTree(g, 0, s))) << toString(s) << " seed " << seed;
   }
 }
@@ -85,6 +85,33 @@ TEST(SpanningTree, KruskalStraightPrefersRows) {
   for (int v = 0; v < static_cast<int>(g.size()); ++v)
     if (t.parent[static_cast<std::size_t>(v)] >= 0 && g.col(t.parent[static_cast<std::size_t>(v)]) == g.col(v)) ++vertical;
   EXPECT_EQ(vertical, 3);  // rows joined by the fewest vertical edges
+}
+
+// longest_runs: a room 12 wide with a strip 2 wide and 10 tall below its east end (an L). The
+// room's nodes prefer rows (runs of 12 against 3 or 11), the strip's columns (runs of 11 against 2):
+// the strip becomes two vertical branches, where kruskal_straight makes a comb of 10 rows of 2. On
+// an open grid (every node prefers rows) the tree is kruskal_straight's.
+TEST(SpanningTree, LongestRunsTurnsStripsAlongTheirLength) {
+  GridGraph g(12, 11);
+  for (int v = 0; v < static_cast<int>(g.size()); ++v) g.active[static_cast<std::size_t>(v)] = g.row(v) == 10 || g.col(v) >= 10;
+  const int root = g.id(0, 10);
+  const SpanningTree runs = longestRunsTree(g, root), straight = kruskalTreePlain(g, root);
+  ASSERT_TRUE(isSpanningTree(g, runs));
+  auto verticalInStrip = [&](const SpanningTree& t) {
+    int n = 0;
+    for (int v = 0; v < static_cast<int>(g.size()); ++v) {
+      const int p = t.parent[static_cast<std::size_t>(v)];
+      if (p >= 0 && g.row(v) < 10 && g.row(p) < 10 && g.col(p) == g.col(v)) ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(verticalInStrip(runs), 18);     // 2 columns of 10 strip nodes: 9 edges each
+  EXPECT_EQ(verticalInStrip(straight), 9);  // one between each two rows of 2: a comb
+  GridGraph open(9, 5);
+  for (auto& a : open.active) a = 1;
+  EXPECT_EQ(longestRunsTree(open, 0), kruskalTreePlain(open, 0));
+  // a weight that makes every edge equal gives kruskal_straight's order too
+  EXPECT_EQ(kruskalTreeWeighted(open, 0, [](int, int) { return 0; }), kruskalTreePlain(open, 0));
 }
 
 TEST(SpanningTree, StrategyNames) {

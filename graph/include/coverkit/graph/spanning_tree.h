@@ -11,6 +11,12 @@
 //  - kruskal_straight: minimum spanning tree with weights that favour straight runs (horizontal
 //    edges cost 1, vertical 2, so rows become long branches and the circumnavigation turns less);
 //    ties broken by edge index so the tree is unique.
+//  - longest_runs: kruskal_straight where a node's straight run of nodes is longer along the column
+//    than along the row: a node whose column run is more than twice its row run prefers vertical
+//    edges, every other one horizontal ones; an edge weighs how many of its two ends prefer the
+//    other axis, ties as kruskal_straight. A strip beside a wall, taller than wide, is then one or
+//    two vertical branches instead of a comb of short horizontal ones; where every node prefers the
+//    horizontal the tree is kruskal_straight's. O(V log V).
 // Each of BFS, Kruskal and a fixed-order DFS exists twice: with Boost.Graph on a
 // compressed_sparse_row_graph and with plain arrays. The tests check both give the same tree; the
 // benchmark (experiments/bench/bench_graph.cpp) measured Boost.Graph 8x (DFS) and 10x (BFS)
@@ -19,6 +25,7 @@
 // so buildTree uses the plain ones (docs/performance.md has the figures).
 #include <coverkit/graph/grid_graph.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,9 +40,9 @@ struct SpanningTree {
   bool operator==(const SpanningTree& o) const { return root == o.root && parent == o.parent; }
 };
 
-enum class TreeStrategy { kDfsCcw, kBfs, kKruskalStraight };
+enum class TreeStrategy { kDfsCcw, kBfs, kKruskalStraight, kLongestRuns };
 const char* toString(TreeStrategy s);
-/// Parses "dfs_ccw", "bfs", "kruskal_straight"; false when unknown.
+/// Parses "dfs_ccw", "bfs", "kruskal_straight", "longest_runs"; false when unknown.
 bool parseTreeStrategy(const std::string& text, TreeStrategy& out);
 std::vector<std::string> treeStrategyNames();
 
@@ -49,6 +56,12 @@ SpanningTree bfsTreeBgl(const GridGraph& g, int root);
 SpanningTree bfsTreePlain(const GridGraph& g, int root);
 SpanningTree kruskalTreeBgl(const GridGraph& g, int root);
 SpanningTree kruskalTreePlain(const GridGraph& g, int root);
+/// Kruskal with a weight per edge: `weight(v, d)` for the edge from v to its neighbour in direction
+/// d (East or North, each edge asked once). Edges are taken by weight, ties in kruskal_straight's
+/// order (east edges by node, then north edges by node), so the tree is unique. O(E log E).
+SpanningTree kruskalTreeWeighted(const GridGraph& g, int root, const std::function<int(int v, int d)>& weight);
+/// longest_runs (above).
+SpanningTree longestRunsTree(const GridGraph& g, int root);
 /// Fixed-order DFS (E, N, W, S), Boost.Graph and plain: the like-for-like pair for the benchmark.
 SpanningTree dfsTreeBgl(const GridGraph& g, int root);
 SpanningTree dfsTreePlain(const GridGraph& g, int root);

@@ -24,6 +24,7 @@ protected:
   void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                   Plan& plan) const override;
   std::string coverageClaim() const override;
+  graph::SpanningTree growTree(const graph::GridGraph& g, int root, const ParamSet& params, int rootFirst) const override;
 };
 
 /// Online Smooth-STC (Algorithm 2): the Spiral-STC robot (senses the four neighbouring mega-cells,
