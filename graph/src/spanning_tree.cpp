@@ -316,6 +316,33 @@ SpanningTree kruskalTreeBgl(const GridGraph& g, int root) {
 
 std::size_t buildCsrOnly(const GridGraph& g) { return boost::num_edges(makeCsr(g, false)); }
 
+namespace {
+
+/// Kruskal's sets, with path halving. join(a, b) puts b's set under a's and is true when they were
+/// apart: along a row each node then points at the row's first node, one step from its root.
+class KruskalSets {
+public:
+  explicit KruskalSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  bool join(int a, int b) {
+    const int ra = find(a), rb = find(b);
+    if (ra == rb) return false;
+    parent_[static_cast<std::size_t>(rb)] = ra;
+    return true;
+  }
+
+private:
+  int find(int x) {
+    while (parent_[static_cast<std::size_t>(x)] != x) {
+      parent_[static_cast<std::size_t>(x)] = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(x)])];
+      x = parent_[static_cast<std::size_t>(x)];
+    }
+    return x;
+  }
+  std::vector<int> parent_;
+};
+
+}  // namespace
+
 SpanningTree kruskalTreePlain(const GridGraph& g, int root) {
   if (!validRoot(g, root)) return emptyTree(g, root);
   // The weights (horizontal before vertical, then by the lower node: see makeCsr) are unique and
@@ -325,25 +352,13 @@ SpanningTree kruskalTreePlain(const GridGraph& g, int root) {
   // not on how the sets are merged.
   const std::vector<std::uint8_t> nb = neighbourMasks(g);
   const Step step(g);
-  std::vector<int> parent(g.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[static_cast<std::size_t>(x)] != x) {
-      parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-      x = parent[static_cast<std::size_t>(x)];
-    }
-    return x;
-  };
+  KruskalSets sets(g.size());
   std::vector<std::uint8_t> mask(g.size(), 0);
   for (int d : {kEast, kNorth})
     for (int v = 0; v < static_cast<int>(g.size()); ++v) {
       if (!(nb[static_cast<std::size_t>(v)] >> d & 1)) continue;
       const int u = step(v, d);
-      const int ra = find(v), rb = find(u);
-      if (ra == rb) continue;
-      // the later set under the earlier one: along a row each node then points at the row's
-      // first node, one step from its root
-      parent[static_cast<std::size_t>(rb)] = ra;
+      if (!sets.join(v, u)) continue;
       mask[static_cast<std::size_t>(v)] |= static_cast<std::uint8_t>(1u << d);
       mask[static_cast<std::size_t>(u)] |= static_cast<std::uint8_t>(1u << opposite(d));
     }
@@ -362,21 +377,11 @@ SpanningTree kruskalTreeWeighted(const GridGraph& g, int root, const std::functi
     for (int v = 0; v < static_cast<int>(g.size()); ++v)
       if (nb[static_cast<std::size_t>(v)] >> d & 1) edges.push_back({weight(v, d), v, d});
   std::stable_sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.weight < b.weight; });
-  std::vector<int> parent(g.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[static_cast<std::size_t>(x)] != x) {
-      parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-      x = parent[static_cast<std::size_t>(x)];
-    }
-    return x;
-  };
+  KruskalSets sets(g.size());
   std::vector<std::uint8_t> mask(g.size(), 0);
   for (const Edge& e : edges) {
     const int u = step(e.v, e.d);
-    const int ra = find(e.v), rb = find(u);
-    if (ra == rb) continue;
-    parent[static_cast<std::size_t>(rb)] = ra;
+    if (!sets.join(e.v, u)) continue;
     mask[static_cast<std::size_t>(e.v)] |= static_cast<std::uint8_t>(1u << e.d);
     mask[static_cast<std::size_t>(u)] |= static_cast<std::uint8_t>(1u << opposite(e.d));
   }

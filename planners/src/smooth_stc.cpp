@@ -1324,23 +1324,17 @@ void dropSlivers(const PlanningContext& ctx, ClearanceChecker& check, Path& path
       out.push_back(g);
       continue;
     }
-    PathSegment& prev = out.back();
-    if (prev.kind == PathSegment::Kind::kLine && prev.length() > tiny) {
-      const PathSegment longer = PathSegment::line(prev.from, g.to);
-      if (pieceClear(check, longer)) {
-        prev = longer;
-        ++merged;
-        continue;
-      }
-    }
-    PathSegment& next = in[i + 1];
-    if (next.kind == PathSegment::Kind::kLine && next.length() > tiny) {
-      const PathSegment longer = PathSegment::line(g.from, next.to);
-      if (pieceClear(check, longer)) {
-        next = longer;
-        ++merged;
-        continue;
-      }
+    // `line` becomes a → b where it is a line and that is exactly clear
+    auto absorb = [&](PathSegment& line, PointD a, PointD b) {
+      if (line.kind != PathSegment::Kind::kLine || line.length() <= tiny) return false;
+      const PathSegment longer = PathSegment::line(a, b);
+      if (!pieceClear(check, longer)) return false;
+      line = longer;
+      return true;
+    };
+    if (absorb(out.back(), out.back().from, g.to) || absorb(in[i + 1], g.from, in[i + 1].to)) {
+      ++merged;
+      continue;
     }
     if (g.length() <= kJointGap && pieceClear(check, g)) {   // between two arcs: the joint steps over it
       ++merged;
