@@ -1231,8 +1231,9 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
 /// the robot stops and turns 180° for. Where what the stretch beyond the nearer end (X, or Y) sweeps
 /// is swept by other pieces too (samples every r/4 along it at five offsets across and three beyond
 /// T, in doubles: a gap's dead end is not, by the gap rule), and the turn that then takes its place
-/// at the nearer end is no reversal, the stretch is left out: X → Y, one line on (checked exactly). Pieces of any spur never count as covering
-/// another's (so no two spurs are dropped for each other). Counted in `spurs_trimmed`.
+/// at the nearer end is no reversal, the stretch is left out: X → Y, one line on (checked exactly).
+/// Pieces of any spur never count as covering another's (so no two spurs are dropped for each
+/// other). Counted in `spurs_trimmed`.
 void trimSpurs(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan) {
   const double r = ctx.problem.robots.at(0).radius.get_d(), tiny = 1e-9 * r;
   std::vector<PathSegment>& g = path.segments;
@@ -1279,7 +1280,8 @@ void trimSpurs(const PlanningContext& ctx, ClearanceChecker& check, Path& path, 
     // between the pieces before and after it.
     const PointD along{(Y.x - X.x), (Y.y - X.y)};
     const double la = std::hypot(along.x, along.y);
-    const bool whole = la < tiny;
+    const bool whole = la <= kJointGap;   // a step the validator takes as a joint (validate.h)
+    if (!whole && la < tiny) continue;     // a line so short would be a sliver
     const double cosLimit = std::cos(150.0 * M_PI / 180);
     if (whole) {
       if (i >= 2 && i + 1 < g.size()) {
@@ -1293,7 +1295,7 @@ void trimSpurs(const PlanningContext& ctx, ClearanceChecker& check, Path& path, 
     if (!covered || !pieceClear(check, stay)) continue;
     a = stay;
     drop[i] = 1;
-    drop[i - 1] = whole;   // the path's joint then steps from X to Y (under 10^-9 r, checked above)
+    drop[i - 1] = whole;   // the path's joint then steps from X to Y (at most kJointGap, checked above)
     ++trimmed;
   }
   std::vector<PathSegment> out;
