@@ -341,6 +341,23 @@ private:
   std::vector<int> parent_;
 };
 
+/// The nodes of root's component, in increasing order: a room's tree on a large map looks at the
+/// room alone.
+std::vector<int> componentNodes(const GridGraph& g, const std::vector<std::uint8_t>& nb, int root) {
+  const Step step(g);
+  std::vector<std::uint8_t> seen(g.size(), 0);
+  std::vector<int> nodes{root};
+  seen[static_cast<std::size_t>(root)] = 1;
+  for (std::size_t head = 0; head < nodes.size(); ++head)
+    for (int d = 0; d < 4; ++d) {
+      if (!(nb[static_cast<std::size_t>(nodes[head])] >> d & 1)) continue;
+      const int u = step(nodes[head], d);
+      if (!seen[static_cast<std::size_t>(u)]) seen[static_cast<std::size_t>(u)] = 1, nodes.push_back(u);
+    }
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
 }  // namespace
 
 SpanningTree kruskalTreePlain(const GridGraph& g, int root) {
@@ -372,9 +389,11 @@ SpanningTree kruskalTreeWeighted(const GridGraph& g, int root, const std::functi
   struct Edge {
     int weight, v, d;
   };
+  // the edges of root's component only (the tree spans no other): O(c log c) for c of its nodes
+  const std::vector<int> nodes = componentNodes(g, nb, root);
   std::vector<Edge> edges;
   for (int d : {kEast, kNorth})
-    for (int v = 0; v < static_cast<int>(g.size()); ++v)
+    for (int v : nodes)
       if (nb[static_cast<std::size_t>(v)] >> d & 1) edges.push_back({weight(v, d), v, d});
   std::stable_sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.weight < b.weight; });
   KruskalSets sets(g.size());
@@ -395,8 +414,8 @@ SpanningTree longestRunsTree(const GridGraph& g, int root) {
   // run[d][v]: the length of the run along d's axis that v lies in (1 for a node alone)
   std::vector<int> run[2] = {std::vector<int>(g.size(), 0), std::vector<int>(g.size(), 0)};
   for (int axis : {kEast, kNorth})
-    for (int v = 0; v < static_cast<int>(g.size()); ++v) {
-      if (!g.active[static_cast<std::size_t>(v)] || run[axis][static_cast<std::size_t>(v)]) continue;
+    for (int v : componentNodes(g, nb, root)) {
+      if (run[axis][static_cast<std::size_t>(v)]) continue;
       if (nb[static_cast<std::size_t>(v)] >> opposite(axis) & 1) continue;   // not the run's first node
       std::vector<int> nodes{v};
       while (nb[static_cast<std::size_t>(nodes.back())] >> axis & 1) nodes.push_back(step(nodes.back(), axis));

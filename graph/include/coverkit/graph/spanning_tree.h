@@ -16,7 +16,8 @@
 //    edges, every other one horizontal ones; an edge weighs how many of its two ends prefer the
 //    other axis, ties as kruskal_straight. A strip beside a wall, taller than wide, is then one or
 //    two vertical branches instead of a comb of short horizontal ones; where every node prefers the
-//    horizontal the tree is kruskal_straight's. O(V log V).
+//    horizontal the tree is kruskal_straight's. O(c log c) for the c nodes of the root's component
+//    (and O(V) to clear its arrays).
 // Each of BFS, Kruskal and a fixed-order DFS exists twice: with Boost.Graph on a
 // compressed_sparse_row_graph and with plain arrays. The tests check both give the same tree; the
 // benchmark (experiments/bench/bench_graph.cpp) measured Boost.Graph 8x (DFS) and 10x (BFS)
@@ -58,7 +59,8 @@ SpanningTree kruskalTreeBgl(const GridGraph& g, int root);
 SpanningTree kruskalTreePlain(const GridGraph& g, int root);
 /// Kruskal with a weight per edge: `weight(v, d)` for the edge from v to its neighbour in direction
 /// d (East or North, each edge asked once). Edges are taken by weight, ties in kruskal_straight's
-/// order (east edges by node, then north edges by node), so the tree is unique. O(E log E).
+/// order (east edges by node, then north edges by node), so the tree is unique. Only the root's
+/// component's edges are weighed and sorted: O(c log c) for its c nodes, and O(V) to clear arrays.
 SpanningTree kruskalTreeWeighted(const GridGraph& g, int root, const std::function<int(int v, int d)>& weight);
 /// longest_runs (above).
 SpanningTree longestRunsTree(const GridGraph& g, int root);
