@@ -612,6 +612,7 @@ void appendRun(Row& row, const RunResult& r) {
   row.emplace_back(static_cast<std::int64_t>(r.validation.violations.size()));
   Metrics m = r.metrics;
   m.hasArea = m.hasCoverable = true;   // the same columns for every row (zeros when not computed)
+  m.hasTeam = false;                   // a team planner's own figures are not columns here (runColumns)
   static const std::vector<Column> cols = runColumns();   // the same for every row
   const auto fields = datasets::metricFields(m);
   for (std::size_t i = 0; i < fields.size(); ++i) {

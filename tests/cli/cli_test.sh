@@ -199,6 +199,10 @@ done
 "$CK" experiment tracc-scenarios --check --out "$T/check-out" | grep -q "config checked: 3 cases" && [ ! -e "$T/check-out" ] && ok || bad "--check of tracc-scenarios"
 # an experiment's --out folder is created with its parents
 "$CK" experiment sweep --config "$T/cfg-good.yaml" --out "$T/new/deeper" > /dev/null && [ -s "$T/new/deeper/results.csv" ] && ok || bad "sweep into a new nested folder"
+# the README's main job: every built-in scenario with every planner (team planners among them, whose
+# extra team figures are not columns of the table), every plan valid, the report written
+"$CK" demo --out "$T/demo" > "$T/demo.out" 2>&1 && grep -q "plans, 0 invalid" "$T/demo.out" && [ -s "$T/demo/report.html" ] &&
+  ok || bad "demo: $(tail -2 "$T/demo.out")"
 # ---------------------------------------------------------------------------------------------
 
 # evaluate's verdict on pieces far outside the map (issue 12): invalid (exit 1), in seconds
