@@ -413,8 +413,9 @@ SpanningTree longestRunsTree(const GridGraph& g, int root) {
   const Step step(g);
   // run[d][v]: the length of the run along d's axis that v lies in (1 for a node alone)
   std::vector<int> run[2] = {std::vector<int>(g.size(), 0), std::vector<int>(g.size(), 0)};
+  const std::vector<int> component = componentNodes(g, nb, root);
   for (int axis : {kEast, kNorth})
-    for (int v : componentNodes(g, nb, root)) {
+    for (int v : component) {
       if (run[axis][static_cast<std::size_t>(v)]) continue;
       if (nb[static_cast<std::size_t>(v)] >> opposite(axis) & 1) continue;   // not the run's first node
       std::vector<int> nodes{v};

@@ -121,6 +121,7 @@
 
 #include <coverkit/geometry/cspace.h>
 #include <coverkit/geometry/fillet.h>
+#include <coverkit/geometry/metrics.h>
 #include <coverkit/geometry/parallel.h>
 #include <coverkit/geometry/validate.h>
 
@@ -170,6 +171,10 @@ std::vector<ParamSpec> entryParam() {
 /// here only rounding, an ulp or so, is that close). A piece so short would have a direction that
 /// is noise, a turn of up to 180° at each end for the metrics and for a robot.
 constexpr double kJointGap = 1e-10;
+
+/// The cosine of the smallest heading change the metrics count as a reversal
+/// (MetricOptions::reversalDeg): the tips and spurs rules remove exactly those.
+const double kReversalCos = std::cos(MetricOptions{}.reversalDeg * M_PI / 180);
 
 Rational slackOf(const Workspace& w) {
   const Box b = w.bbox();
@@ -1185,7 +1190,7 @@ void cutTips(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Pl
       continue;
     }
     const PointD u = unitHeading(prev, true), v = unitHeading(next, false);
-    if (u.x * v.x + u.y * v.y >= std::cos(150.0 * M_PI / 180)) {   // not a reversal (metrics.h)
+    if (u.x * v.x + u.y * v.y >= kReversalCos) {   // not a reversal
       take(i++);
       continue;
     }
@@ -1282,15 +1287,14 @@ void trimSpurs(const PlanningContext& ctx, ClearanceChecker& check, Path& path, 
     const double la = std::hypot(along.x, along.y);
     const bool whole = la <= kJointGap;   // a step the validator takes as a joint (validate.h)
     if (!whole && la < tiny) continue;     // a line so short would be a sliver
-    const double cosLimit = std::cos(150.0 * M_PI / 180);
     if (whole) {
       if (i >= 2 && i + 1 < g.size()) {
         const PointD h = unitHeading(g[i - 2], true), k = unitHeading(g[i + 1], false);
-        if (h.x * k.x + h.y * k.y < cosLimit) continue;
+        if (h.x * k.x + h.y * k.y < kReversalCos) continue;
       }
     } else if (shortIn ? i >= 2 : i + 1 < g.size()) {
       const PointD h = shortIn ? unitHeading(g[i - 2], true) : unitHeading(g[i + 1], false);
-      if ((h.x * along.x + h.y * along.y) / la < cosLimit) continue;
+      if ((h.x * along.x + h.y * along.y) / la < kReversalCos) continue;
     }
     if (!covered || !pieceClear(check, stay)) continue;
     a = stay;
