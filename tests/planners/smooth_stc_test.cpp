@@ -223,6 +223,36 @@ TEST(SmoothStc, NoReversalsFromRoundingOrGrazingContacts) {
   }
 }
 
+// Patches: pockets of C-free between obstacles more than 4r apart inside partially occupied
+// mega-cells, which no sweep (inside its rectangle) and no contour pass (within 2r of a contour)
+// reaches. A large robot (r = 0.4 on a 16 m world, 15 obstacles of 1-2 m, about a mega-cell each;
+// the worlds of experiments/configs/smooth_stc_large_robots.yaml): with the default patches=1 the
+// plan is exactly valid and the same twice, has patches, no reversal, covers at least 0.3 points
+// more of the coverable region than without (0.9893 against 0.9817 when written), and turns by
+// exactly 360° more a patch (each is a circle tangent to a line of the path: no corner).
+TEST(SmoothStc, PatchesReachPocketsBetweenObstaclesThatNoSweepReaches) {
+  datasets::PolygonWorldSpec spec;
+  spec.width = spec.height = 16;
+  spec.count = 15;
+  spec.minSize = 1, spec.maxSize = 2;
+  spec.shape = datasets::ObstacleShape::kMixed;
+  spec.seed = 1;
+  const auto ctx = testing_helpers::contextFor(datasets::generatePolygonWorld(spec), Rational(2, 5));
+  const Plan patched = planners::runPlanner("smooth_stc", ctx, {});
+  const Plan none = planners::runPlanner("smooth_stc", ctx, {{"patches", "none"}});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, patched));
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, none));
+  const double made = patched.statistics.at("patches");
+  EXPECT_GE(made, 1);
+  EXPECT_EQ(none.statistics.count("patches"), 0u);
+  EXPECT_GT(coverable(ctx, patched), coverable(ctx, none) + 0.003);
+  MetricOptions o;
+  const Metrics mp = computeMetrics(ctx.problem, ctx.cells, patched.paths, o), mn = computeMetrics(ctx.problem, ctx.cells, none.paths, o);
+  EXPECT_EQ(mp.reversals, 0u);
+  EXPECT_NEAR(mp.turningAngleDeg - mn.turningAngleDeg, 360 * made, 1e-3 * mn.turningAngleDeg);
+  EXPECT_EQ(testing_helpers::pathJsonOf(patched), testing_helpers::pathJsonOf(planners::runPlanner("smooth_stc", ctx, {})));
+}
+
 // tree=auto (the default) takes whichever of kruskal_straight, its columns-first twin and
 // longest_runs the tour turns least around. A room 16 × 12 m with a box in it that leaves a band
 // along the top and bottom walls and strips 2 m wide along the side walls (ros/grid.yaml's shape):
