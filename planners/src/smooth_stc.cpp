@@ -1669,6 +1669,87 @@ void patchBlobs(const PlanningContext& ctx, ClearanceChecker& check, Path& path,
   plan.statistics["patches_left"] = static_cast<double>(left);
 }
 
+/// Taut stretches (ours): a contour of a grid map's obstacle is a staircase of pixels, and its
+/// C-space contour a scallop of arcs about the stair's corners meeting in notches: about 30° of
+/// turning a pixel each way (ros/depot.yaml at r = 0.25: 2.8 × Full-STC's total turning) for a wall
+/// that is straight at the robot's scale. Where a stretch of up to 32 pieces stays within `tau` of
+/// the line between its ends (every line's ends and an arc's points every eighth of its angle; in
+/// doubles), the line turns less than the stretch with its two joints, and the line is exactly
+/// clear (ClearanceChecker), the line replaces it: the longest such stretch from each joint. What
+/// the stretch swept and the line does not lies within `tau` of it. A line whose joint would turn by
+/// more than 150° (a reversal: a U-turn narrower than 2 tau) is not taken.
+void pullTaut(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan, double tau) {
+  const std::vector<PathSegment>& in = path.segments;
+  constexpr std::size_t kWindow = 32;
+  std::vector<PathSegment> out;
+  out.reserve(in.size());
+  std::size_t taken = 0, replaced = 0;
+  auto arcAngle = [](const PathSegment& p) {
+    return p.kind == PathSegment::Kind::kArc ? p.length() / std::hypot(p.from.x - p.center.x, p.from.y - p.center.y) : 0.0;
+  };
+  std::vector<PointD> pts;
+  std::size_t i = 0;
+  while (i < in.size()) {
+    const PointD A = in[i].from;
+    // the pieces i .. j-1 as points, grown one piece at a time; the longest j that qualifies first
+    pts.clear();
+    std::vector<std::size_t> ok;   // j with every point within tau of A → B
+    double inner = 0;              // the stretch's own turning (joints inside it and arcs)
+    std::vector<double> innerAt;
+    for (std::size_t j = i + 1; j <= in.size() && j <= i + kWindow; ++j) {
+      const PathSegment& p = in[j - 1];
+      if (j > i + 1) inner += std::abs(turnAt(in[j - 2], p));
+      inner += arcAngle(p);
+      innerAt.push_back(inner);
+      if (p.kind == PathSegment::Kind::kArc) {
+        const double a0 = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x), rho = std::hypot(p.from.x - p.center.x, p.from.y - p.center.y);
+        const double sweep = arcAngle(p) * (p.ccw ? 1 : -1);
+        for (int k = 1; k < 8; ++k) pts.push_back({p.center.x + rho * std::cos(a0 + sweep * k / 8), p.center.y + rho * std::sin(a0 + sweep * k / 8)});
+      }
+      pts.push_back(p.to);
+      if (j < i + 2) continue;
+      const PointD B = p.to;
+      const double dx = B.x - A.x, dy = B.y - A.y, len = std::hypot(dx, dy);
+      if (len <= tau) continue;
+      bool within = true;
+      for (const PointD& q : pts) {
+        const double t = ((q.x - A.x) * dx + (q.y - A.y) * dy) / (len * len);
+        const double e = t < 0 ? std::hypot(q.x - A.x, q.y - A.y) : t > 1 ? std::hypot(q.x - B.x, q.y - B.y)
+                                                                         : std::abs((q.x - A.x) * dy - (q.y - A.y) * dx) / len;
+        if (e > tau) {
+          within = false;
+          break;
+        }
+      }
+      if (within) ok.push_back(j);
+    }
+    bool done = false;
+    for (auto it = ok.rbegin(); it != ok.rend() && !done; ++it) {
+      const std::size_t j = *it;
+      const PathSegment line = PathSegment::line(A, in[j - 1].to);
+      double before = innerAt[j - i - 1], after = 0, worst = 0;
+      if (!out.empty()) {
+        const double t = std::abs(turnAt(out.back(), line));
+        before += std::abs(turnAt(out.back(), in[i])), after += t, worst = std::max(worst, t);
+      }
+      if (j < in.size()) {
+        const double t = std::abs(turnAt(line, in[j]));
+        before += std::abs(turnAt(in[j - 1], in[j])), after += t, worst = std::max(worst, t);
+      }
+      if (after >= before - 1e-9 || std::cos(worst) < kReversalCos || !pieceClear(check, line)) continue;
+      out.push_back(line);
+      ++taken;
+      replaced += j - i;
+      i = j;
+      done = true;
+    }
+    if (!done) out.push_back(in[i++]);
+  }
+  path.segments.swap(out);
+  plan.statistics["taut_lines"] = static_cast<double>(taken);
+  plan.statistics["taut_pieces_replaced"] = static_cast<double>(replaced);
+}
+
 void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path, Plan& plan,
             bool online, PocketWalk pocketWalk) {
   const auto t = Clock::now();
@@ -1700,6 +1781,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   dropSlivers(ctx, check, path, plan);
   cutTips(ctx, check, path, plan);
   trimSpurs(ctx, check, path, plan);
+  if (!online && params.number("taut") > 0) pullTaut(ctx, check, path, plan, params.number("taut") * ctx.problem.robots.at(0).radius.get_d());
   const std::string corners = params.text("corners");
   if (corners == "fill" || (corners == "auto" && loops.start.empty())) fillCorners(ctx, check, path, plan);
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());
@@ -1751,6 +1833,9 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
   p.push_back({"patches", ParamType::kDouble, "1", "0:1000|none",
                "with the contour passes: bumps from the path into each group of robot centres that nothing sweeps, of at "
                "least this area in r^2 (groups between obstacles more than 4r apart), or none"});
+  p.push_back({"taut", ParamType::kDouble, "0.0625", "0:1",
+               "stretches of the path (a grid map's staircase contours: scallops of arcs) that stay within this many r of "
+               "the line between their ends are replaced by the line where it turns less and is exactly clear; 0: none"});
   p.push_back({"detours", ParamType::kChoice, "needed", "needed|every",
                "sweeps that leave the tour and come back (two corners, 180 degrees more turning): only where they sweep "
                "at least r^2 that the tour and the other sweeps do not (needed), or every one (the paper's)"});
