@@ -1675,7 +1675,8 @@ void patchBlobs(const PlanningContext& ctx, ClearanceChecker& check, Path& path,
 /// that is straight at the robot's scale. Where a stretch of up to 32 pieces stays within `tau` of
 /// the line between its ends (every line's ends and an arc's points every eighth of its angle; in
 /// doubles), the line turns less than the stretch with its two joints, and the line is exactly
-/// clear (ClearanceChecker), the line replaces it: the longest such stretch from each joint. What
+/// clear (ClearanceChecker), the line replaces it: the longest such stretch from each joint (grown
+/// piece by piece until a point strays: linear in the path). What
 /// the stretch swept and the line does not lies within `tau` of it. A line whose joint would turn by
 /// more than 150° (a reversal: a U-turn narrower than 2 tau) is not taken.
 void pullTaut(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan, double tau) {
@@ -1721,7 +1722,8 @@ void pullTaut(const PlanningContext& ctx, ClearanceChecker& check, Path& path, P
           break;
         }
       }
-      if (within) ok.push_back(j);
+      if (!within) break;   // the longest stretch from A that stays within tau: no longer one is tried
+      ok.push_back(j);
     }
     bool done = false;
     for (auto it = ok.rbegin(); it != ok.rend() && !done; ++it) {
