@@ -1523,28 +1523,36 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
 /// try, never safety.
 class EdgeIndex {
 public:
+  /// The workspace's edges by cell (side `reach`, coarser where that would exceed about a million
+  /// cells), listed per cell in two passes (count, then fill).
   EdgeIndex(const Workspace& w, double reach, BoxD box) : reach_(reach), box_(box) {
     const double W = box.xmax - box.xmin, H = box.ymax - box.ymin;
-    cell_ = std::max({reach, std::sqrt(W * H / (4.0 * 1024 * 1024)), 1e-300});
+    cell_ = std::max({reach, std::sqrt(W * H / (1024.0 * 1024)), std::max(W, H) / (1024.0 * 1024), 1e-300});
     nx_ = static_cast<long>(W / cell_) + 1, ny_ = static_cast<long>(H / cell_) + 1;
-    cells_.resize(static_cast<std::size_t>(nx_ * ny_));
     for (const Ring* ring : w.rings())
       for (std::size_t i = 0; i < ring->size(); ++i) {
         const Point& p = (*ring)[i];
         const Point& q = (*ring)[(i + 1) % ring->size()];
-        const PointD a{p.x.get_d(), p.y.get_d()}, b{q.x.get_d(), q.y.get_d()};
-        const auto e = static_cast<std::uint32_t>(edges_.size());
-        edges_.push_back({a, b});
-        for (long y = key(std::min(a.y, b.y) - reach, box_.ymin, ny_); y <= key(std::max(a.y, b.y) + reach, box_.ymin, ny_); ++y)
-          for (long x = key(std::min(a.x, b.x) - reach, box_.xmin, nx_); x <= key(std::max(a.x, b.x) + reach, box_.xmin, nx_); ++x)
-            cells_[static_cast<std::size_t>(y * nx_ + x)].push_back(e);
+        edges_.push_back({PointD{p.x.get_d(), p.y.get_d()}, PointD{q.x.get_d(), q.y.get_d()}});
       }
+    auto each = [&](const std::pair<PointD, PointD>& e, auto&& f) {
+      const auto& [a, b] = e;
+      for (long y = key(std::min(a.y, b.y) - reach, box_.ymin, ny_); y <= key(std::max(a.y, b.y) + reach, box_.ymin, ny_); ++y)
+        for (long x = key(std::min(a.x, b.x) - reach, box_.xmin, nx_); x <= key(std::max(a.x, b.x) + reach, box_.xmin, nx_); ++x)
+          f(static_cast<std::size_t>(y * nx_ + x));
+    };
+    start_.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+    for (const auto& e : edges_) each(e, [&](std::size_t c) { ++start_[c + 1]; });
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    list_.resize(start_.back());
+    for (std::size_t e = 0; e < edges_.size(); ++e) each(edges_[e], [&](std::size_t c) { list_[fill[c]++] = static_cast<std::uint32_t>(e); });
   }
   /// No edge within `reach` of p.
   bool clearOf(PointD p) const {
-    const std::vector<std::uint32_t>& c = cells_[static_cast<std::size_t>(key(p.y, box_.ymin, ny_) * nx_ + key(p.x, box_.xmin, nx_))];
-    for (std::uint32_t e : c) {
-      const auto& [a, b] = edges_[e];
+    const auto c = static_cast<std::size_t>(key(p.y, box_.ymin, ny_) * nx_ + key(p.x, box_.xmin, nx_));
+    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
+      const auto& [a, b] = edges_[list_[k]];
       const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
       const double t = l2 > 0 ? std::min(1.0, std::max(0.0, ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2)) : 0;
       if (std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy) < reach_) return false;
@@ -1560,7 +1568,8 @@ private:
   BoxD box_;
   long nx_ = 1, ny_ = 1;
   std::vector<std::pair<PointD, PointD>> edges_;
-  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::size_t> start_;   ///< the edges of cell c: list_[start_[c] .. start_[c + 1])
+  std::vector<std::uint32_t> list_;
 };
 
 void patchBlobs(const PlanningContext& ctx, ClearanceChecker& check, Path& path, Plan& plan, double minArea) {
