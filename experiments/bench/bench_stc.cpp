@@ -80,7 +80,7 @@ static void BM_SmoothStcVsStc(benchmark::State& state) {
   ctx.threads = static_cast<unsigned>(state.range(1));  // Smooth-STC's sweeps; STC has no parallel phase
   double smoothSeconds = 0, stcSeconds = 0;
   const std::map<std::string, std::string> params =
-      state.range(2) ? std::map<std::string, std::string>{} : std::map<std::string, std::string>{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}};
+      state.range(2) ? std::map<std::string, std::string>{} : std::map<std::string, std::string>{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}, {"taut", "0"}};
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
     Plan smooth = planners::runPlanner("smooth_stc", ctx, params);

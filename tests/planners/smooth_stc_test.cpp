@@ -407,7 +407,7 @@ TEST(SmoothStc, OnlineEqualsOfflineWithThePapersTree) {
     const auto ctx = testing_helpers::contextFor(polygonWorld(seed, 10, 5), Rational(1, 4));
     // the offline defaults' straight tree and detours=needed are not the online robot's (it cannot
     // know the whole tour): the paper's tree and every detour
-    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}};
+    const std::map<std::string, std::string> paperTree{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}, {"taut", "0"}};
     const Plan offline = planners::runPlanner("smooth_stc", ctx, paperTree);
     const Plan online = planners::runPlanner("smooth_stc_online", ctx, {});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, online));
@@ -483,7 +483,7 @@ TEST(SmoothStc, JoinsAPocketThatPartialMegaCellsCutOff) {
   const auto ctx = testing_helpers::contextFor(w, Rational(1, 4), Point{Rational(1, 4), Rational(1, 4)});
   // the paper's tree, every detour and no travel to rooms (which would reach the pocket as well):
   // the pocket joined by the sweep is what is measured, beside the online robot's
-  const std::map<std::string, std::string> base{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}};
+  const std::map<std::string, std::string> base{{"tree", "dfs_ccw"}, {"detours", "every"}, {"rooms", "leave"}, {"contours", "none"}, {"taut", "0"}};
   auto with = [&](std::map<std::string, std::string> extra) {
     extra.insert(base.begin(), base.end());
     return extra;
