@@ -29,6 +29,22 @@ using detail::exactOf;
 using detail::Sweeps;
 
 
+/// The point a fraction t of the way along a piece, and the heading there.
+PointD pointOn(const PathSegment& s, double t) {
+  if (s.kind == PathSegment::Kind::kLine) return {s.from.x + t * (s.to.x - s.from.x), s.from.y + t * (s.to.y - s.from.y)};
+  const double a0 = std::atan2(s.from.y - s.center.y, s.from.x - s.center.x), rho = dist(s.from, s.center);
+  double sweep = std::remainder(std::atan2(s.to.y - s.center.y, s.to.x - s.center.x) - a0, 2 * M_PI);
+  if (s.ccw && sweep < 0) sweep += 2 * M_PI;
+  if (!s.ccw && sweep > 0) sweep -= 2 * M_PI;
+  const double a = a0 + t * sweep;
+  return {s.center.x + rho * std::cos(a), s.center.y + rho * std::sin(a)};
+}
+double headingAt(const PathSegment& s, double t) {
+  if (s.kind == PathSegment::Kind::kLine) return headingOf(s, false);
+  const PointD p = pointOn(s, t);
+  return std::atan2(p.y - s.center.y, p.x - s.center.x) + (s.ccw ? M_PI / 2 : -M_PI / 2);
+}
+
 bool clearPiece(ClearanceChecker& check, const PathSegment& s) {
   if (s.kind == PathSegment::Kind::kLine) return check.clear(exactOf(s.from), exactOf(s.to));
   return check.clearArc(exactOf(s.from), exactOf(s.to), exactOf(s.center), s.ccw);
@@ -59,7 +75,8 @@ Plan FilletProcessor::process(const Problem& problem, const Plan& plan, const pl
     // 2/3 and all of (1 − rim)·r in 24 directions, and beside the cut-off parts, at their chords)
     auto keeps = [&](std::size_t i, const PathSegment& cur, const PathSegment& next, const PathSegment& a2, const PathSegment& f,
                      const PathSegment& b2) {
-      const PathSegment cut1 = PathSegment::line(a2.to, cur.to);
+      const PathSegment cut1 = cur.kind == PathSegment::Kind::kLine ? PathSegment::line(a2.to, cur.to)
+                                                                    : PathSegment::arc(a2.to, cur.to, cur.center, cur.ccw);
       const PathSegment cut2 = next.kind == PathSegment::Kind::kLine ? PathSegment::line(next.from, b2.from)
                                                                      : PathSegment::arc(next.from, b2.from, next.center, next.ccw);
       std::vector<PointD> samples;
@@ -69,8 +86,8 @@ Plan FilletProcessor::process(const Problem& problem, const Plan& plan, const pl
           samples.push_back({c.x + f3 * r * std::cos(a * M_PI / 12), c.y + f3 * r * std::sin(a * M_PI / 12)});
       for (const PathSegment* s : {&cut1, &cut2})
         for (double t : {0.25, 0.5, 0.75, 1.0}) {
-          const PointD p{s->from.x + t * (s->to.x - s->from.x), s->from.y + t * (s->to.y - s->from.y)};
-          const double h = headingOf(*s, false) + M_PI / 2;
+          const PointD p = pointOn(*s, t);
+          const double h = headingAt(*s, t) + M_PI / 2;
           for (double side : {-1.0, 1.0})
             for (double f2 : {reach / 2, reach}) samples.push_back({p.x + side * f2 * r * std::cos(h), p.y + side * f2 * r * std::sin(h)});
         }
@@ -98,7 +115,7 @@ Plan FilletProcessor::process(const Problem& problem, const Plan& plan, const pl
     };
     // a piece gives at most half its length to each end
     const auto room = [&](std::size_t i, const PathSegment&, const PathSegment&, bool) { return segs[i].length() / 2; };
-    const FilletCount n = roundCorners(segs, 0, {maxRadius, maxRadius / 1024, 5, 1, 179}, room, accept, made);
+    const FilletCount n = roundCorners(segs, 0, {maxRadius, maxRadius / 1024, 5, 1, 179, true}, room, accept, made);
     corners += n.corners;
     rounded += n.rounded;
     for (std::size_t i = 0; i < refused.size(); ++i) keptForCoverage += refused[i] && !done[i];

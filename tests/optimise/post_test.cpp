@@ -163,6 +163,31 @@ TEST(PostProcessing, SmoothStraightensAZigzag) {
   EXPECT_EQ(testing_helpers::pathJsonOf(out), testing_helpers::pathJsonOf(optimise::postProcess(ctx.problem, plan, {{"smooth", {}}})));
 }
 
+// The notch where two arcs of a C-space contour meet (the robot rounding two pixel corners of a
+// grid map's staircase wall): `fillet` rounds it too, and as the arcs on either side turn the
+// other way and are shortened, the total turning falls (it would stay for two lines).
+TEST(PostProcessing, FilletRoundsTheNotchBetweenTwoArcs) {
+  const double h = std::sqrt(3.0) / 2;
+  const PointD a{2 - h, 4.5}, joint{2.5, 4 + h}, b{3 + h, 4.5};
+  const auto ctx = testing_helpers::contextFor(testing_helpers::boxWith({}, 8, 8), Rational(1, 4), Point{exactFromDouble(a.x), exactFromDouble(a.y)});
+  Plan plan;
+  plan.status = PlanStatus::kExactSolution;
+  Path path;
+  path.start = a;
+  path.segments = {PathSegment::arc(a, joint, {2, 4}, false), PathSegment::arc(joint, b, {3, 4}, false)};
+  plan.paths = {path};
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+  const Metrics m0 = computeMetrics(ctx.problem, ctx.cells, plan.paths);
+  ASSERT_EQ(m0.turns, 1);   // the notch (60°)
+  const Plan out = optimise::postProcess(ctx.problem, plan, {{"fillet", {}}});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, out));
+  EXPECT_EQ(out.statistics.at("post_fillet_rounded"), 1);
+  const Metrics m1 = computeMetrics(ctx.problem, ctx.cells, out.paths);
+  EXPECT_EQ(m1.turns, 0);
+  EXPECT_LT(m1.turningAngleDeg, m0.turningAngleDeg - 1);
+  EXPECT_LT(m1.robotTime, m0.robotTime);
+}
+
 TEST(RobotTime, LinesCornersAndArcsAsTheModelSays) {
   MetricOptions o;   // v 0.5 m/s, a 0.5 m/s², ω 1.5 rad/s
   Path line;
