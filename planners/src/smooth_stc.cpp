@@ -158,10 +158,12 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <map>
 #include <set>
 #include <tuple>
+#include <unordered_set>
 
 namespace coverkit::planners {
 
@@ -448,7 +450,9 @@ private:
 
   std::vector<Opening> openings(const std::vector<CellIndex>& walk) const {
     std::vector<Opening> out;
-    std::vector<std::uint8_t> entered(cells_.megaCount(), 0);
+    // entries=parent: one opening a leaf (a set, not an array the size of the map: a room's walk
+    // is small and there may be hundreds of them)
+    std::unordered_set<std::size_t> entered;
     for (std::size_t i = 0; i + 1 < walk.size(); ++i) {
       const CellIndex a = walk[i], b = walk[i + 1];
       if (a.col / 2 != b.col / 2 || a.row / 2 != b.row / 2) continue;
@@ -462,9 +466,7 @@ private:
       if (a.col + graph::kDx[right] < 0 || a.row + graph::kDy[right] < 0 || (na == a.col / 2 && ma == a.row / 2)) continue;
       const int lc = a.col / 2 + graph::kDx[right], lr = a.row / 2 + graph::kDy[right];
       if (!cells_.insideMega(lc, lr) || cells_.mega(lc, lr) == CellState::kFree) continue;
-      std::uint8_t& e = entered[megaIndex(lc, lr)];
-      if (!every_ && e) continue;
-      e = 1;
+      if (!every_ && !entered.insert(megaIndex(lc, lr)).second) continue;
       out.push_back({i, dir, lc, lr, throughRuns_ ? runFrom(lc, lr, right) : 1});
     }
     return out;
@@ -592,7 +594,18 @@ private:
     std::vector<std::uint8_t> take(open.size(), 1);
     if (!needed_) return take;
     const double r = ctx_.problem.robots.at(0).radius.get_d();
-    CoverIndex index(r, mapBox());
+    // the index covers the sweeps' box (every point it is asked about lies within r of a sweep):
+    // a room's tour asks about the room, not the map
+    BoxD box{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
+             std::numeric_limits<double>::lowest()};
+    for (const CSpace::Sweep& sw : sweeps)
+      for (const PathSegment& p : sw.pieces)
+        for (const PointD& q : {p.from, p.to, p.kind == PathSegment::Kind::kArc ? p.center : p.from}) {
+          const double rho = p.kind == PathSegment::Kind::kArc ? std::hypot(p.from.x - p.center.x, p.from.y - p.center.y) : 0;
+          box = {std::min(box.xmin, q.x - rho), std::min(box.ymin, q.y - rho), std::max(box.xmax, q.x + rho), std::max(box.ymax, q.y + rho)};
+        }
+    if (!(box.xmin <= box.xmax)) return take;   // no sweep: nothing to choose
+    CoverIndex index(r, box);
     for (const PathSegment& p : path.segments) index.add(p);
     for (const PathSegment& p : precovered_) index.add(p);
     std::vector<std::size_t> detours;
@@ -1882,7 +1895,7 @@ Capabilities SmoothStcPlanner::capabilities() const {
 void SmoothStcPlanner::refinePath(const PlanningContext& ctx, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                                   Plan& plan) const {
   const graph::GridGraph g = buildGraph(ctx);
-  refine(ctx, walk, params, path, plan, false, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
+  refine(ctx, walk, params, path, plan, false, [&](CellIndex s) { return tourOfComponent(ctx, g, s, params); });
 }
 
 std::string SmoothStcPlanner::coverageClaim() const { return kClaim; }

@@ -18,8 +18,10 @@
 
 #include "walk_path.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <unordered_set>
 
 namespace coverkit::planners {
 
@@ -67,13 +69,15 @@ int StcSkeleton::startNode(const PlanningContext&, const graph::GridGraph& g, Ce
   return g.active[static_cast<std::size_t>(v)] ? v : -1;
 }
 
-std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, const graph::GridGraph&, graph::SpanningTree& tree,
-                                                   CellIndex start, const ParamSet&, Plan&) const {
+namespace {
+
+/// The skeleton's walk (StcSkeleton::circumnavigate) round the tree whose edge masks are
+/// `treeEdges` on a grid of `mcols` mega-cells a row, with `nodes` nodes, from sub-cell `start`.
+std::vector<CellIndex> walkAround(const std::uint8_t* treeEdges, int mcols, std::size_t nodes, CellIndex start) {
   // Quadrants counter-clockwise: 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left.
   // From quadrant q the robot moves in direction q (E, N, W, S) to quadrant q+1 of the same
   // mega-cell, unless the tree has an edge on the arm it would cross (direction q+3): then it moves
   // in that direction into the neighbour, arriving in quadrant q+3.
-  const int mcols = ctx.cells.megaCols();
   int mc = start.col / 2, mr = start.row / 2;
   int q = quadrantOf(start);
   const int q0 = q;
@@ -93,14 +97,14 @@ std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, c
     return t;
   }();
   // every quadrant of every tree node once and back to the start, plus room for the surplus
-  std::vector<CellIndex> walk(4 * tree.nodes + 5);
+  std::vector<CellIndex> walk(4 * nodes + 5);
   std::size_t n = 0;
   walk[n++] = subCellOf(mc, mr, q);
-  const std::uint8_t* edges = tree.edges.data();
+  const std::uint8_t* edges = treeEdges;
   int v = mr * mcols + mc;
   const int v0 = v;
   for (;;) {
-    if (n + 5 > walk.size()) walk.resize(2 * walk.size());  // never with a tree of tree.nodes nodes
+    if (n + 5 > walk.size()) walk.resize(2 * walk.size());  // never with a tree of nodes nodes
     CellIndex* out = walk.data() + n;
     const int k = quadrantsBefore[edges[v]][static_cast<std::size_t>(q)];
     for (int j = 1; j <= 4; ++j) out[j - 1] = subCellOf(mc, mr, (q + j) & 3);
@@ -122,6 +126,13 @@ std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, c
   }
   walk.resize(n);
   return walk;
+}
+
+}  // namespace
+
+std::vector<CellIndex> StcSkeleton::circumnavigate(const PlanningContext& ctx, const graph::GridGraph&, graph::SpanningTree& tree,
+                                                   CellIndex start, const ParamSet&, Plan&) const {
+  return walkAround(tree.edges.data(), ctx.cells.megaCols(), tree.nodes, start);
 }
 
 Plan StcSkeleton::plan(const PlanningContext& ctx, const ParamSet& params, const TerminationCondition&) {
@@ -226,6 +237,37 @@ std::vector<CellIndex> StcSkeleton::tourFrom(const PlanningContext& ctx, const g
   graph::SpanningTree tree = growTree(g, root, params, (quadrantOf(s) + 3) & 3);
   Plan scratch;  // the walk's statistics belong to the caller's own plan, not to this tour
   return circumnavigate(ctx, g, tree, s, params, scratch);
+}
+
+std::vector<CellIndex> StcSkeleton::tourOfComponent(const PlanningContext& ctx, const graph::GridGraph& g, CellIndex s,
+                                                    const ParamSet& params) const {
+  if (!g.links.empty() || g.layers != 1) return tourFrom(ctx, g, s, params);
+  const int root = startNode(ctx, g, s);
+  if (root < 0) return {};
+  // the component, breadth-first, and its box (a hash set: no array the size of the map)
+  std::vector<int> nodes{root};
+  std::unordered_set<int> seen{root};
+  int c0 = g.col(root), c1 = c0, r0 = g.row(root), r1 = r0;
+  for (std::size_t head = 0; head < nodes.size(); ++head)
+    for (int d = 0; d < 4; ++d) {
+      const int u = g.neighbour(nodes[head], d);
+      if (u < 0 || !seen.insert(u).second) continue;
+      nodes.push_back(u);
+      c0 = std::min(c0, g.col(u)), c1 = std::max(c1, g.col(u)), r0 = std::min(r0, g.row(u)), r1 = std::max(r1, g.row(u));
+    }
+  // the box as a graph of its own, the component's nodes alone active: the same row-major order of
+  // nodes and the same neighbours, so every tree strategy makes the same tree in it
+  graph::GridGraph box(c1 - c0 + 1, r1 - r0 + 1);
+  for (int v : nodes) {
+    const int b = box.id(g.col(v) - c0, g.row(v) - r0);
+    box.active[static_cast<std::size_t>(b)] = 1;
+    box.open[static_cast<std::size_t>(b)] = g.open[static_cast<std::size_t>(v)];
+  }
+  const CellIndex local{s.col - 2 * c0, s.row - 2 * r0};
+  const graph::SpanningTree tree = growTree(box, box.id(local.col / 2, local.row / 2), params, (quadrantOf(s) + 3) & 3);
+  std::vector<CellIndex> walk = walkAround(tree.edges.data(), box.cols, tree.nodes, local);
+  for (CellIndex& c : walk) c.col += 2 * c0, c.row += 2 * r0;
+  return walk;
 }
 
 std::string SpiralStcPlanner::description() const {

@@ -43,6 +43,14 @@ protected:
   /// The closed walk (hook 3) around the tree (hook 2) grown in `g` from sub-cell s's node; empty
   /// when s has none. Smooth-STC tours the pockets it joins with it.
   std::vector<CellIndex> tourFrom(const PlanningContext& context, const graph::GridGraph& g, CellIndex s, const ParamSet& params) const;
+  /// tourFrom in time and memory of s's component rather than of the map: the tree is grown in a
+  /// graph of the component's box alone and walked as the skeleton's circumnavigate walks (for a
+  /// planner that keeps the skeleton's walk; a graph with layers or links falls back to tourFrom).
+  /// The same walk: the box keeps the nodes' row-major order and their neighbours. Smooth-STC tours
+  /// its rooms and pockets with it (191 rooms on a map of 10^6 mega-cells: a tree the size of the
+  /// map for each was most of the plan's time).
+  std::vector<CellIndex> tourOfComponent(const PlanningContext& context, const graph::GridGraph& g, CellIndex s,
+                                         const ParamSet& params) const;
   /// The graph node the start sub-cell belongs to, or -1 (default: its mega-cell, when active).
   virtual int startNode(const PlanningContext& context, const graph::GridGraph& g, CellIndex start) const;
   /// The cells a start must lie in (for the invalid_start message).
