@@ -1,8 +1,10 @@
 #include "helpers/checkers.h"
 
+#include <coverkit/datasets/generators.h>
 #include <coverkit/datasets/readers.h>
 #include <coverkit/geometry/error.h>
 #include <coverkit/planners/registry.h>
+#include <coverkit/planners/smooth_stc.h>
 
 #include <gtest/gtest.h>
 
@@ -79,4 +81,59 @@ TEST(Stc, CoversTheStartComponentOnTheBuiltInMaps) {
       EXPECT_TRUE(testing_helpers::coversStartComponent(ctx, plan)) << f;
     }
   }
+}
+
+// tourOfComponent (a component's tree grown in a graph of its box alone, as Smooth-STC tours its
+// rooms and pockets) makes the walk tourFrom makes in the whole map's graph: every component of a
+// cluttered grid map, from every quadrant of its first mega-cell, with every tree strategy,
+// Smooth-STC's `auto` and `longest_runs` among them.
+namespace {
+template <class Base>
+class Exposed : public Base {
+public:
+  using Base::buildGraph;
+  using Base::tourFrom;
+  using Base::tourOfComponent;
+};
+}  // namespace
+
+TEST(Stc, TourOfAComponentIsTheTourInTheWholeMap) {
+  datasets::GridMapSpec spec;
+  spec.width = spec.height = 48;
+  spec.density = 0.3;
+  spec.clustered = true;
+  spec.seed = 7;
+  const auto ctx = testing_helpers::contextFor(datasets::gridToWorkspace(datasets::generateGridMap(spec), "grid"), Rational(1, 2));
+  const Exposed<planners::StcPlanner> stc;
+  const Exposed<planners::SmoothStcPlanner> smooth;
+  const graph::GridGraph g = stc.buildGraph(ctx);
+  // the first mega-cell of each component, in row-major order
+  std::vector<int> firsts, label(g.size(), -1);
+  for (int v = 0; v < static_cast<int>(g.size()); ++v) {
+    if (!g.active[static_cast<std::size_t>(v)] || label[static_cast<std::size_t>(v)] >= 0) continue;
+    firsts.push_back(v);
+    std::vector<int> queue{v};
+    label[static_cast<std::size_t>(v)] = v;
+    for (std::size_t h = 0; h < queue.size(); ++h)
+      for (int d = 0; d < 4; ++d)
+        if (const int u = g.neighbour(queue[h], d); u >= 0 && label[static_cast<std::size_t>(u)] < 0)
+          label[static_cast<std::size_t>(u)] = v, queue.push_back(u);
+  }
+  ASSERT_GE(firsts.size(), 5u);   // several rooms, or the test shows nothing
+  std::size_t compared = 0;
+  for (int v : firsts)
+    for (int q = 0; q < 4; ++q) {
+      const CellIndex s = planners::subCellOf(g.col(v), g.row(v), q);
+      for (const char* tree : {"dfs_ccw", "bfs", "kruskal_straight"}) {
+        const planners::ParamSet p(stc.params(), {{"tree", tree}}, "stc");
+        EXPECT_EQ(stc.tourOfComponent(ctx, g, s, p), stc.tourFrom(ctx, g, s, p)) << v << " " << q << " " << tree;
+        ++compared;
+      }
+      for (const char* tree : {"auto", "longest_runs", "kruskal_straight"}) {
+        const planners::ParamSet p(smooth.params(), {{"tree", tree}}, "smooth_stc");
+        EXPECT_EQ(smooth.tourOfComponent(ctx, g, s, p), smooth.tourFrom(ctx, g, s, p)) << v << " " << q << " " << tree;
+        ++compared;
+      }
+    }
+  EXPECT_GE(compared, 120u);
 }
