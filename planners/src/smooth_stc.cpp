@@ -253,6 +253,15 @@ PointD pointAlong(const PathSegment& p, double l, double len) {
   return {p.center.x + rho * std::cos(a), p.center.y + rho * std::sin(a)};
 }
 
+/// A box holding a piece: its ends' for a line, its whole circle's for an arc.
+BoxD boundsOf(const PathSegment& s) {
+  if (s.kind == PathSegment::Kind::kArc) {
+    const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
+    return {s.center.x - rho, s.center.y - rho, s.center.x + rho, s.center.y + rho};
+  }
+  return {std::min(s.from.x, s.to.x), std::min(s.from.y, s.to.y), std::max(s.from.x, s.to.x), std::max(s.from.y, s.to.y)};
+}
+
 /// Whether p lies within `limit` of piece s (in doubles: squared distances for lines; for arcs,
 /// the circle's annulus first, so that most arcs need no angles).
 bool withinReach(const PathSegment& s, PointD p, double limit) {
@@ -296,11 +305,7 @@ public:
   void add(const PathSegment& s) {
     const auto i = static_cast<std::int32_t>(pieces_.size());
     pieces_.push_back(s);
-    BoxD b{std::min(s.from.x, s.to.x), std::min(s.from.y, s.to.y), std::max(s.from.x, s.to.x), std::max(s.from.y, s.to.y)};
-    if (s.kind == PathSegment::Kind::kArc) {
-      const double rho = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
-      b = {s.center.x - rho, s.center.y - rho, s.center.x + rho, s.center.y + rho};
-    }
+    const BoxD b = boundsOf(s);
     const double reach = r_ * (1 + 1e-6);
     for (long by = key(b.ymin - reach, box_.ymin, ny_); by <= key(b.ymax + reach, box_.ymin, ny_); ++by)
       for (long bx = key(b.xmin - reach, box_.xmin, nx_); bx <= key(b.xmax + reach, box_.xmin, nx_); ++bx) {
@@ -599,11 +604,10 @@ private:
     BoxD box{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
              std::numeric_limits<double>::lowest()};
     for (const CSpace::Sweep& sw : sweeps)
-      for (const PathSegment& p : sw.pieces)
-        for (const PointD& q : {p.from, p.to, p.kind == PathSegment::Kind::kArc ? p.center : p.from}) {
-          const double rho = p.kind == PathSegment::Kind::kArc ? std::hypot(p.from.x - p.center.x, p.from.y - p.center.y) : 0;
-          box = {std::min(box.xmin, q.x - rho), std::min(box.ymin, q.y - rho), std::max(box.xmax, q.x + rho), std::max(box.ymax, q.y + rho)};
-        }
+      for (const PathSegment& p : sw.pieces) {
+        const BoxD q = boundsOf(p);
+        box = {std::min(box.xmin, q.xmin), std::min(box.ymin, q.ymin), std::max(box.xmax, q.xmax), std::max(box.ymax, q.ymax)};
+      }
     if (!(box.xmin <= box.xmax)) return take;   // no sweep: nothing to choose
     CoverIndex index(r, box);
     for (const PathSegment& p : path.segments) index.add(p);

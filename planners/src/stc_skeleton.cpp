@@ -72,8 +72,8 @@ int StcSkeleton::startNode(const PlanningContext&, const graph::GridGraph& g, Ce
 namespace {
 
 /// The skeleton's walk (StcSkeleton::circumnavigate) round the tree whose edge masks are
-/// `treeEdges` on a grid of `mcols` mega-cells a row, with `nodes` nodes, from sub-cell `start`.
-std::vector<CellIndex> walkAround(const std::uint8_t* treeEdges, int mcols, std::size_t nodes, CellIndex start) {
+/// `edges` on a grid of `mcols` mega-cells a row, with `nodes` nodes, from sub-cell `start`.
+std::vector<CellIndex> walkAround(const std::uint8_t* edges, int mcols, std::size_t nodes, CellIndex start) {
   // Quadrants counter-clockwise: 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left.
   // From quadrant q the robot moves in direction q (E, N, W, S) to quadrant q+1 of the same
   // mega-cell, unless the tree has an edge on the arm it would cross (direction q+3): then it moves
@@ -100,11 +100,10 @@ std::vector<CellIndex> walkAround(const std::uint8_t* treeEdges, int mcols, std:
   std::vector<CellIndex> walk(4 * nodes + 5);
   std::size_t n = 0;
   walk[n++] = subCellOf(mc, mr, q);
-  const std::uint8_t* edges = treeEdges;
   int v = mr * mcols + mc;
   const int v0 = v;
   for (;;) {
-    if (n + 5 > walk.size()) walk.resize(2 * walk.size());  // never with a tree of nodes nodes
+    if (n + 5 > walk.size()) walk.resize(2 * walk.size());  // never with a tree of `nodes` nodes
     CellIndex* out = walk.data() + n;
     const int k = quadrantsBefore[edges[v]][static_cast<std::size_t>(q)];
     for (int j = 1; j <= 4; ++j) out[j - 1] = subCellOf(mc, mr, (q + j) & 3);
