@@ -795,7 +795,10 @@ private:
   /// free sub-cells, which holds the disc, and is checked exactly), tours the room's own tree with
   /// its sweeps (and pockets) from e back to e, and returns the same way. The search goes on; a
   /// room toured is in a tree, so it is entered once. Which sub-cells start the search, and the
-  /// order, follow the path: the plan is the same every time.
+  /// order, follow the path: the plan is the same every time. A door of a scan turned against the
+  /// map's axes holds no chain of free sub-cells: when the lanes find no room, the search starts
+  /// from the path's joints too (travelPass with `joints`), which the contour passes bring through
+  /// every door of the start's component.
 public:
   /// An excursion decided in a pass: the way there and back, and the room's walk and tour (whose
   /// sweeps are made for all the pass's rooms at once).
@@ -811,6 +814,7 @@ public:
   struct Source {
     std::size_t segment;
     PointD at;
+    bool joint = false;   ///< at the end of the segment, off the sub-cells' centres (a way's first line leaves it obliquely)
   };
 
   void travel(Path& path, bool gaps) {
@@ -819,12 +823,14 @@ public:
     for (int row = 0; row < cells_.megaRows() && !rooms; ++row)
       for (int col = 0; col < cells_.megaCols() && !rooms; ++col)
         rooms = cells_.mega(col, row) == CellState::kFree && !inTree_[megaIndex(col, row)];
-    while (rooms && travelPass(path, failed, false)) {
+    // a room whose every way from the lanes is blocked (a door off the sub-cell grid: a scan not
+    // aligned with the map's axes) is looked for again from the path's joints
+    while (rooms && (travelPass(path, failed, false, false) || travelPass(path, failed, false, true))) {
     }
     if (!gaps) return;
     markGaps(path);
     if (std::find(gap_.begin(), gap_.end(), std::uint8_t{1}) == gap_.end()) return;
-    while (travelPass(path, failed, true)) {
+    while (travelPass(path, failed, true, false)) {
     }
   }
 
@@ -881,8 +887,12 @@ public:
   /// One pass: every room found is toured unless its way leaves the path from the same sub-cell
   /// by the same first step as one toured before in this pass (coming back from one and going out
   /// to the other would reverse on the spot); the next pass finds it from the ways and rooms added.
-  /// Returns whether a room was toured.
-  bool travelPass(Path& path, std::vector<std::uint8_t>& failed, bool gaps) {
+  /// Returns whether a room was toured. With `joints` the ways may also leave the path at a joint
+  /// (the end of a piece, a line or an arc, so that no piece is split) by a straight line to a free
+  /// sub-cell's centre within 2D (checked exactly, as every way is), making a turn of at most 150°
+  /// there and coming back: the contour passes go through every door of the start's component,
+  /// also the doors no chain of free sub-cells passes.
+  bool travelPass(Path& path, std::vector<std::uint8_t>& failed, bool gaps, bool joints) {
     const int sc = cells_.subCols(), sr = cells_.subRows();
     const double D = cells_.subSizeD(), tol = 1e-9 * std::max(1.0, D * std::max(sc, sr));
     auto index = [&](int c, int r) { return static_cast<std::size_t>(r) * sc + c; };
@@ -921,6 +931,41 @@ public:
                           : std::abs(at - b) <= tol ? g.to
                                                     : PointD{g.from.x + t * (g.to.x - g.from.x), g.from.y + t * (g.to.y - g.from.y)};
         addSource(on, k);
+      }
+    }
+    if (joints) {
+      // only towards the free sub-cells no chain from the lanes reaches, each way's first line
+      // checked exactly here, so that a blocked one leaves the sub-cell to another joint
+      std::vector<std::uint8_t> reached(cells_.subCount(), 0);
+      std::vector<int> open = queue;
+      for (int v : open) reached[static_cast<std::size_t>(v)] = 1;
+      for (std::size_t head = 0; head < open.size(); ++head)
+        for (int d = 0; d < 4; ++d) {
+          const int c = open[head] % sc + graph::kDx[d], r = open[head] / sc + graph::kDy[d];
+          if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || reached[index(c, r)]) continue;
+          reached[index(c, r)] = 1;
+          open.push_back(static_cast<int>(index(c, r)));
+        }
+      const double reach = 2 * D;
+      for (std::size_t k = 0; k + 1 < path.segments.size(); ++k) {
+        const PointD p = path.segments[k].to;
+        const PointD hin = unitHeading(path.segments[k], true), hout = unitHeading(path.segments[k + 1], false);
+        CellIndex at;
+        if (!cells_.locateSubD(p, at)) continue;
+        for (int dr = -2; dr <= 2; ++dr)
+          for (int dc = -2; dc <= 2; ++dc) {
+            const int c = at.col + dc, r = at.row + dr;
+            if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || reached[index(c, r)] || sourceOf[index(c, r)] >= 0) continue;
+            const PointD q = cells_.subCenterD(c, r);
+            const double len = std::hypot(q.x - p.x, q.y - p.y);
+            if (len > reach || len <= tol) continue;
+            const PointD w{(q.x - p.x) / len, (q.y - p.y) / len};
+            if (hin.x * w.x + hin.y * w.y < kReversalCos || -(w.x * hout.x + w.y * hout.y) < kReversalCos) continue;
+            if (!clear(PathSegment::line(p, q))) continue;
+            sourceOf[index(c, r)] = static_cast<std::int64_t>(sources.size());
+            sources.push_back({k, p, true});
+            queue.push_back(static_cast<int>(index(c, r)));
+          }
       }
     }
     std::vector<int> parent(cells_.subCount(), -2);
@@ -967,6 +1012,11 @@ public:
       auto along = [&](PointD p) { return std::abs(p.x - g.from.x) + std::abs(p.y - g.from.y); };
       std::stable_sort(at[k].begin(), at[k].end(), [&](const auto& x, const auto& y) { return along(x.first) < along(y.first); });
       PointD from = g.from;
+      if (g.kind != PathSegment::Kind::kLine) {   // ways from its end only (joints)
+        out.push_back(g);
+        for (const auto& [p, pieces] : at[k]) out.insert(out.end(), pieces.begin(), pieces.end());
+        continue;
+      }
       for (const auto& [p, pieces] : at[k]) {
         // the segment's parts before and after the point, as they will be, exactly clear (else
         // the excursion is left out: its room or gaps stay uncovered, the path stays valid)
@@ -1006,6 +1056,7 @@ private:
     }
     // the way there: centres from the source's point to e's, straight runs merged
     std::vector<PointD> way{src.at};
+    if (src.joint) way.push_back(cells_.subCenterD(chain.back() % sc, chain.back() / sc));
     for (std::size_t i = chain.size() - 1; i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
     std::vector<PathSegment> there = mergedLines(way);
     std::vector<std::size_t> marked;
@@ -1036,7 +1087,7 @@ private:
     }
     for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
     if (ok) ok = clear(back.front());
-    if (ok) {  // the path's piece split where the way leaves it
+    if (ok && !src.joint) {  // the path's piece split where the way leaves it
       const PathSegment& g = path.segments[src.segment];
       ok = clear(PathSegment::line(g.from, src.at)) && clear(PathSegment::line(src.at, g.to));
     }
