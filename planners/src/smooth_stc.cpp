@@ -981,7 +981,10 @@ public:
       const std::size_t m = megaIndex(col / 2, row / 2);
       const bool target = gaps ? gap_[static_cast<std::size_t>(v)] != 0
                                : !inTree_[m] && !failed[m] && cells_.mega(col / 2, row / 2) == CellState::kFree;
-      if (parent[static_cast<std::size_t>(v)] >= 0 && target) any = visitRoom(path, v, parent, sources, sourceOf, pending, leaving, failed, gaps) || any;
+      // a sub-cell a joint's line reaches may be in the room itself: the room's tour starts there
+      // (the way ends at its centre, whereas a lane's source is on the path already)
+      const bool fromJoint = parent[static_cast<std::size_t>(v)] == -1 && sources[static_cast<std::size_t>(sourceOf[static_cast<std::size_t>(v)])].joint;
+      if ((parent[static_cast<std::size_t>(v)] >= 0 || fromJoint) && target) any = visitRoom(path, v, parent, sources, sourceOf, pending, leaving, failed, gaps) || any;
       for (int d = 0; d < 4; ++d) {
         const int c = col + graph::kDx[d], r = row + graph::kDy[d];
         if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || parent[index(c, r)] != -2) continue;
@@ -1043,7 +1046,7 @@ private:
     std::vector<int> chain{e};   // e back to a source
     while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
     const Source& src = sources[static_cast<std::size_t>(sourceOf[static_cast<std::size_t>(chain.back())])];
-    const std::pair<int, int> leave{chain.back(), chain[chain.size() - 2]};
+    const std::pair<int, int> leave{chain.back(), chain.size() > 1 ? chain[chain.size() - 2] : -1};
     if (leaving.count(leave)) return false;   // the next pass
     const CellIndex ec{e % sc, e / sc};
     const std::size_t room = megaIndex(ec.col / 2, ec.row / 2);

@@ -514,7 +514,7 @@ TEST(SmoothStc, JoinsAPocketThatPartialMegaCellsCutOff) {
 // door, and no sweep crosses one, so the rooms beyond the first are reached only by the contour
 // passes, which go through every door of the start's component: the rooms pass leaves the path at
 // one of their joints by a line to a free sub-cell (checked exactly) and tours each room. Before
-// the ways from joints (when written) the plan covered 0.603 of the coverable region, now 0.990.
+// the ways from joints (when written) the plan covered 0.603 of the coverable region, now 0.989.
 TEST(SmoothStc, ToursRoomsBehindDoorsOffTheSubCellGrid) {
   datasets::OccupancyGrid g;
   g.width = 320, g.height = 260, g.resolution = Rational(1, 20);
