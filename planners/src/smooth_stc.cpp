@@ -809,6 +809,8 @@ public:
     std::vector<CellIndex> walk;
     Path tour;
     bool room;
+    int joint = -1;                    ///< the sub-cell a joint's line goes to, else -1
+    std::vector<std::size_t> marked;   ///< the mega-cells the room's walk put in a tree
   };
 
   struct Source {
@@ -948,6 +950,7 @@ public:
         }
       const double reach = 2 * D;
       for (std::size_t k = 0; k + 1 < path.segments.size(); ++k) {
+        if (path.segments[k].length() <= tol || path.segments[k + 1].length() <= tol) continue;   // a sliver's heading is noise
         const PointD p = path.segments[k].to;
         const PointD hin = unitHeading(path.segments[k], true), hout = unitHeading(path.segments[k + 1], false);
         CellIndex at;
@@ -955,7 +958,9 @@ public:
         for (int dr = -2; dr <= 2; ++dr)
           for (int dc = -2; dc <= 2; ++dc) {
             const int c = at.col + dc, r = at.row + dr;
-            if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || reached[index(c, r)] || sourceOf[index(c, r)] >= 0) continue;
+            if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || reached[index(c, r)] || sourceOf[index(c, r)] >= 0 ||
+                banned_.count({p.x, p.y, static_cast<int>(index(c, r))}))
+              continue;
             const PointD q = cells_.subCenterD(c, r);
             const double len = std::hypot(q.x - p.x, q.y - p.y);
             if (len > reach || len <= tol) continue;
@@ -999,6 +1004,19 @@ public:
       if (x.room) rooms.emplace_back(&x.walk, &x.tour);
     tourMany(rooms);   // the rooms' own sweeps (and pockets)
     for (Excursion& x : pending) {
+      // a joint's line can run along the room's first or last piece the other way (a sweep
+      // towards the joint): that way is left, the room is looked for again from another joint
+      auto reverses = [](const PathSegment& a, const PathSegment& b) {
+        const PointD u = unitHeading(a, true), v = unitHeading(b, false);
+        return u.x * v.x + u.y * v.y < kReversalCos;
+      };
+      if (x.joint >= 0 && !x.tour.segments.empty() &&
+          (reverses(x.there.back(), x.tour.segments.front()) || reverses(x.tour.segments.back(), x.back.front()))) {
+        for (std::size_t m : x.marked) inTree_[m] = 0;
+        banned_.insert({x.at.x, x.at.y, x.joint});
+        --roomsJoined_;
+        continue;
+      }
       std::vector<PathSegment> pieces = std::move(x.there);
       pieces.insert(pieces.end(), x.tour.segments.begin(), x.tour.segments.end());
       pieces.insert(pieces.end(), x.back.begin(), x.back.end());
@@ -1102,7 +1120,8 @@ private:
     }
     leaving.insert(leave);
     if (pw.size() == 1) placed.path.segments.clear();
-    pending.push_back({src.segment, src.at, std::move(there), std::move(back), std::move(pw), std::move(placed.path), !gaps});
+    pending.push_back({src.segment, src.at, std::move(there), std::move(back), std::move(pw), std::move(placed.path), !gaps,
+                       src.joint ? chain.back() : -1, std::move(marked)});
     ++(gaps ? gapsJoined_ : roomsJoined_);
     return true;
   }
@@ -1123,6 +1142,7 @@ private:
   std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
   std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
   std::size_t excursionsDropped_ = 0, passes_ = 0;
+  std::set<std::tuple<double, double, int>> banned_;   ///< (joint, sub-cell) whose way reversed into its room's tour
 };
 
 /// Segments by bucket (side 2r), for "does anything pass within r of this point" in doubles.
