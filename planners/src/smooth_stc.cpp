@@ -827,7 +827,7 @@ public:
         rooms = cells_.mega(col, row) == CellState::kFree && !inTree_[megaIndex(col, row)];
     // a room whose every way from the lanes is blocked (a door off the sub-cell grid: a scan not
     // aligned with the map's axes) is looked for again from the path's joints
-    while (rooms && (travelPass(path, failed, false, false) || travelPass(path, failed, false, true))) {
+    while (rooms && (travelPass(path, failed, false, false) || (unreachedRooms_ && travelPass(path, failed, false, true)))) {
     }
     if (!gaps) return;
     markGaps(path);
@@ -948,6 +948,29 @@ public:
           reached[index(c, r)] = 1;
           open.push_back(static_cast<int>(index(c, r)));
         }
+      // and only towards those from which a room is reached (a pocket of free sub-cells among
+      // obstacles, with no free mega-cell outside every tree, is no way anywhere: no exact checks)
+      std::vector<std::uint8_t> leads(cells_.subCount(), 0);
+      std::vector<int> stack;
+      for (int row = 0; row < sr; ++row)
+        for (int col = 0; col < sc; ++col) {
+          const std::size_t m = megaIndex(col / 2, row / 2);
+          if (cells_.sub(col, row) != CellState::kFree || reached[index(col, row)] || leads[index(col, row)] || inTree_[m] || failed[m] ||
+              cells_.mega(col / 2, row / 2) != CellState::kFree)
+            continue;
+          leads[index(col, row)] = 1;
+          stack.assign(1, static_cast<int>(index(col, row)));
+          while (!stack.empty()) {
+            const int v = stack.back();
+            stack.pop_back();
+            for (int d = 0; d < 4; ++d) {
+              const int c = v % sc + graph::kDx[d], r = v / sc + graph::kDy[d];
+              if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || leads[index(c, r)]) continue;
+              leads[index(c, r)] = 1;   // unreached too: the lanes' chains reach every sub-cell joined to them
+              stack.push_back(static_cast<int>(index(c, r)));
+            }
+          }
+        }
       const double reach = 2 * D;
       for (std::size_t k = 0; k + 1 < path.segments.size(); ++k) {
         if (path.segments[k].length() <= tol || path.segments[k + 1].length() <= tol) continue;   // a sliver's heading is noise
@@ -958,7 +981,7 @@ public:
         for (int dr = -2; dr <= 2; ++dr)
           for (int dc = -2; dc <= 2; ++dc) {
             const int c = at.col + dc, r = at.row + dr;
-            if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || reached[index(c, r)] || sourceOf[index(c, r)] >= 0 ||
+            if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || !leads[index(c, r)] || sourceOf[index(c, r)] >= 0 ||
                 banned_.count({p.x, p.y, static_cast<int>(index(c, r))}))
               continue;
             const PointD q = cells_.subCenterD(c, r);
@@ -997,7 +1020,17 @@ public:
         queue.push_back(static_cast<int>(index(c, r)));
       }
     }
-    if (!any) return false;
+    if (!any) {
+      // a room no chain from the lanes reaches (only then the joints' pass, which costs a pass)
+      unreachedRooms_ = false;
+      for (std::size_t v = 0; v < parent.size() && !gaps && !joints && !unreachedRooms_; ++v) {
+        const int col = static_cast<int>(v) % sc, row = static_cast<int>(v) / sc;
+        const std::size_t m = megaIndex(col / 2, row / 2);
+        unreachedRooms_ = parent[v] == -2 && cells_.sub(col, row) == CellState::kFree && cells_.mega(col / 2, row / 2) == CellState::kFree &&
+                          !inTree_[m] && !failed[m];
+      }
+      return false;
+    }
     ++passes_;
     std::vector<std::pair<const std::vector<CellIndex>*, Path*>> rooms;
     for (Excursion& x : pending)
@@ -1142,6 +1175,7 @@ private:
   std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
   std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
   std::size_t excursionsDropped_ = 0, passes_ = 0;
+  bool unreachedRooms_ = false;   ///< the last pass from the lanes found no room, and a room is beyond their chains
   std::set<std::tuple<double, double, int>> banned_;   ///< (joint, sub-cell) whose way reversed into its room's tour
 };
 
