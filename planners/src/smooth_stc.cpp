@@ -936,26 +936,16 @@ public:
       }
     }
     if (joints) {
-      // only towards the free sub-cells no chain from the lanes reaches, each way's first line
-      // checked exactly here, so that a blocked one leaves the sub-cell to another joint
-      std::vector<std::uint8_t> reached(cells_.subCount(), 0);
-      std::vector<int> open = queue;
-      for (int v : open) reached[static_cast<std::size_t>(v)] = 1;
-      for (std::size_t head = 0; head < open.size(); ++head)
-        for (int d = 0; d < 4; ++d) {
-          const int c = open[head] % sc + graph::kDx[d], r = open[head] / sc + graph::kDy[d];
-          if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || reached[index(c, r)]) continue;
-          reached[index(c, r)] = 1;
-          open.push_back(static_cast<int>(index(c, r)));
-        }
-      // and only towards those from which a room is reached (a pocket of free sub-cells among
+      // only towards the free sub-cells no chain from the lanes reaches (the search of the lanes'
+      // pass just before, on the same path), each way's first line checked exactly here, so that
+      // a blocked one leaves the sub-cell to another joint, and only towards those from which a room is reached (a pocket of free sub-cells among
       // obstacles, with no free mega-cell outside every tree, is no way anywhere: no exact checks)
       std::vector<std::uint8_t> leads(cells_.subCount(), 0);
       std::vector<int> stack;
       for (int row = 0; row < sr; ++row)
         for (int col = 0; col < sc; ++col) {
           const std::size_t m = megaIndex(col / 2, row / 2);
-          if (cells_.sub(col, row) != CellState::kFree || reached[index(col, row)] || leads[index(col, row)] || inTree_[m] || failed[m] ||
+          if (cells_.sub(col, row) != CellState::kFree || laneReached_[index(col, row)] || leads[index(col, row)] || inTree_[m] || failed[m] ||
               cells_.mega(col / 2, row / 2) != CellState::kFree)
             continue;
           leads[index(col, row)] = 1;
@@ -1023,11 +1013,14 @@ public:
     if (!any) {
       // a room no chain from the lanes reaches (only then the joints' pass, which costs a pass)
       unreachedRooms_ = false;
-      for (std::size_t v = 0; v < parent.size() && !gaps && !joints && !unreachedRooms_; ++v) {
+      if (gaps || joints) return false;
+      laneReached_.assign(parent.size(), 0);
+      for (std::size_t v = 0; v < parent.size(); ++v) {
+        laneReached_[v] = parent[v] != -2;
         const int col = static_cast<int>(v) % sc, row = static_cast<int>(v) / sc;
         const std::size_t m = megaIndex(col / 2, row / 2);
-        unreachedRooms_ = parent[v] == -2 && cells_.sub(col, row) == CellState::kFree && cells_.mega(col / 2, row / 2) == CellState::kFree &&
-                          !inTree_[m] && !failed[m];
+        unreachedRooms_ = unreachedRooms_ || (!laneReached_[v] && cells_.sub(col, row) == CellState::kFree &&
+                                              cells_.mega(col / 2, row / 2) == CellState::kFree && !inTree_[m] && !failed[m]);
       }
       return false;
     }
@@ -1176,6 +1169,7 @@ private:
   std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
   std::size_t excursionsDropped_ = 0, passes_ = 0;
   bool unreachedRooms_ = false;   ///< the last pass from the lanes found no room, and a room is beyond their chains
+  std::vector<std::uint8_t> laneReached_;   ///< that pass's search: the sub-cells a chain from the lanes reaches
   std::set<std::tuple<double, double, int>> banned_;   ///< (joint, sub-cell) whose way reversed into its room's tour
 };
 
