@@ -80,7 +80,7 @@
 //    for 0.0008 of the coverable region). The guard's rim is 0.01 r, not the processor's
 //    0.04 r: on the seeded worlds (6 per count of 2, 10, 25 obstacles, r = 0.25) it keeps 0.03-0.15
 //    points more of the coverable region for 4-7 % more robot time (smaller arcs are driven slower),
-//    and on ros/grid.yaml at r = 0.25 0.9970 against 0.9967 (when it was chosen, with the revision
+//    and on ros/grid.yaml at r = 0.25 0.9979 against 0.9975 (when it was chosen, with the revision
 //    of that day, 0.9981 against 0.9966). Coverage is the planner's first promise.
 //  - Contour passes (`contours`, ours; the paper has none): the sweeps meet the C-space contour
 //    only inside their rectangles, so the band along each obstacle and each wall was swept a piece
