@@ -1553,8 +1553,10 @@ void mitreLoop(ClearanceChecker& check, std::vector<PathSegment>& loop, double r
       continue;
     const PointD u = unitHeading(a, false), v = unitHeading(a, true);
     const double rho = std::hypot(a.from.x - a.center.x, a.from.y - a.center.y);
-    const double turn = std::abs(std::atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y));   // the arc's sweep, below 180°
-    if (std::abs(rho - r) > 0.01 * r || turn < M_PI / 180 || turn > 2 * M_PI / 3) continue;
+    // the headings' change; the arc's sweep where it turns the arc's way (an arc beyond 180° would
+    // show as a turn the other way, and its tangents' crossing lies on the wrong side)
+    const double signedTurn = std::atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y), turn = std::abs(signedTurn);
+    if ((signedTurn > 0) != a.ccw || std::abs(rho - r) > 0.01 * r || turn < M_PI / 180 || turn > 2 * M_PI / 3) continue;
     const double bx = (a.from.x + a.to.x) / 2 - a.center.x, by = (a.from.y + a.to.y) / 2 - a.center.y, bn = std::hypot(bx, by);
     if (!(bn > 0)) continue;
     const double d = rho / std::cos(turn / 2);
