@@ -1700,12 +1700,17 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
 /// about a mega-cell in size) is left. Robot centres are sampled every r/2 over the map; those at
 /// least 1.02 r from every edge (doubles) that the path's own centres reach through such samples
 /// and that lie farther than r from every piece are grouped 4-connected; each group of at least
-/// `minArea` r² gets a bump: from a point a of a nearby line of the path to the group's middle c
-/// and on to b on the same line, a and b placed so that each leg leaves the line at α = 30°, 45°
-/// or 60° (4α of turning, no reversal; a stem there and back to a loop turned 720°), the least
-/// turning first; both legs checked exactly (ClearanceChecker), else the next candidate. At most
-/// three bumps a group, each aimed at what the ones before left. The samples decide only where to
-/// try, never safety.
+/// `minArea` r² gets circles. Candidates: circles tangent to a piece of the path (a line, or an arc
+/// at the target's projection on it) within 8r of a target, of radius the piece's distance to the
+/// target or half of it, that run the piece's way at the tangent point; the targets are the open
+/// centre nearest the group's centroid and up to three more, each the open centre farthest from
+/// those before (a long or L-shaped group's arms). The candidate that sweeps the most open centres
+/// is tried first (then the nearest piece, the full radius before half); its two halves checked
+/// exactly (ClearanceChecker), else the next, and none that sweeps less than half of `minArea` r².
+/// The robot runs round the circle and on along the piece: 360° of turning, no corner, nothing the
+/// piece swept lost. A group gets up to 3 + (its area / 8r²) circles, at most 16; after each, what
+/// it still has open is split again into 4-connected parts, each patched on its own. The samples
+/// decide only where to try, never safety.
 class EdgeIndex {
 public:
   /// The workspace's edges by cell (side `reach`, coarser where that would exceed about a million
@@ -1863,63 +1868,147 @@ void patchBlobs(const PlanningContext& ctx, ClearanceChecker& check, Path& path,
       });
     if (static_cast<double>(g.size()) * h * h >= minArea * r * r) groups.push_back(std::move(g));
   }
+  // A group gets up to 3 + (its area / 8r²) circles in all, at most 16. After a circle, what is
+  // left of the group open is split again into 4-connected parts, each of at least `minArea` r²
+  // patched on its own with the circles left (and no more than its own area gives; depth first, so
+  // a group that stays whole gets its circles one after the other, aimed at what the ones before
+  // left): a circle through an open area's middle may cut it in two, and the middle of the two
+  // halves together then lies on the circle.
   std::size_t made = 0, left = 0;
-  for (const std::vector<long>& g : groups) {
-    for (int round = 0; round < 3; ++round) {
-      std::vector<PointD> open;
-      for (long k : g)
-        if (!index.covered(at(k % nx, k / nx))) open.push_back(at(k % nx, k / nx));
-      if (static_cast<double>(open.size()) * h * h < minArea * r * r) break;
-      PointD m{0, 0};
-      for (const PointD& p : open) m.x += p.x / static_cast<double>(open.size()), m.y += p.y / static_cast<double>(open.size());
+  std::vector<std::uint32_t> mark(state.size(), 0);
+  std::uint32_t token = 0;
+  std::vector<std::pair<std::vector<long>, int>> work;   // (cells, rounds left), a stack
+  auto budget = [&](std::size_t cells) { return std::min(16, 3 + static_cast<int>(static_cast<double>(cells) * h * h / (8 * r * r))); };
+  for (auto it = groups.rbegin(); it != groups.rend(); ++it) work.emplace_back(std::move(*it), budget(it->size()));
+  while (!work.empty()) {
+    const std::vector<long> g = std::move(work.back().first);
+    const int rounds = work.back().second;
+    work.pop_back();
+    std::vector<PointD> open;
+    std::vector<long> openCells;
+    for (long k : g)
+      if (!index.covered(at(k % nx, k / nx))) open.push_back(at(k % nx, k / nx)), openCells.push_back(k);
+    if (static_cast<double>(open.size()) * h * h < minArea * r * r) continue;
+    PointD m{0, 0};
+    for (const PointD& p : open) m.x += p.x / static_cast<double>(open.size()), m.y += p.y / static_cast<double>(open.size());
+    // targets: the open centre nearest the centroid, then up to three more, each the open centre
+    // farthest from the ones before (an L-shaped or ring-shaped group's arms)
+    std::vector<PointD> targets;
+    {
       PointD c = open.front();
       for (const PointD& p : open)
         if (std::hypot(p.x - m.x, p.y - m.y) < std::hypot(c.x - m.x, c.y - m.y)) c = p;
-      struct Cand {
-        double cost;
-        std::size_t j;
-        PointD a, o;   // the tangent point on line j, the circle's centre
-        bool operator<(const Cand& x) const { return std::tie(cost, j) < std::tie(x.cost, x.j); }
-      };
-      std::vector<Cand> cand;
-      for (std::size_t j = 0; j < path.segments.size(); ++j) {
-        const PathSegment& s = path.segments[j];
-        if (s.kind != PathSegment::Kind::kLine) continue;
-        const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y, len = std::hypot(dx, dy);
-        if (len < r / 2) continue;
-        const double ux = dx / len, uy = dy / len;
-        const double t = (c.x - s.from.x) * ux + (c.y - s.from.y) * uy;
-        const double side = (c.y - s.from.y) * ux - (c.x - s.from.x) * uy;   // > 0: c left of the line
-        const double d = std::abs(side);
-        if (t < r / 8 || t > len - r / 8 || d < r / 2 || d > 8 * r) continue;
-        const PointD f{s.from.x + t * ux, s.from.y + t * uy}, n{side > 0 ? -uy : uy, side > 0 ? ux : -ux};
-        for (double k : {1.0, 0.5}) {
-          const double rho = k * d;
-          cand.push_back({d / r + (k < 1 ? 0.5 : 0), j, f, PointD{f.x + rho * n.x, f.y + rho * n.y}});
-        }
-      }
-      std::sort(cand.begin(), cand.end());
-      bool done = false;
-      for (std::size_t k = 0; k < cand.size() && k < 32 && !done; ++k) {
-        const Cand& x = cand[k];
-        const PathSegment s = path.segments[x.j];
-        const bool ccw = (x.o.x - s.from.x) * (s.to.y - s.from.y) - (x.o.y - s.from.y) * (s.to.x - s.from.x) < 0;
-        const PointD far{2 * x.o.x - x.a.x, 2 * x.o.y - x.a.y};
-        const PathSegment half1 = PathSegment::arc(x.a, far, x.o, ccw), half2 = PathSegment::arc(far, x.a, x.o, ccw);
-        if (!pieceClear(check, half1) || !pieceClear(check, half2)) continue;
-        std::vector<PathSegment> ins{PathSegment::line(s.from, x.a), half1, half2, PathSegment::line(x.a, s.to)};
-        index.add(half1);
-        index.add(half2);
-        path.segments.erase(path.segments.begin() + static_cast<std::ptrdiff_t>(x.j));
-        path.segments.insert(path.segments.begin() + static_cast<std::ptrdiff_t>(x.j), ins.begin(), ins.end());
-        done = true;
-      }
-      if (done) ++made;
-      else {
-        ++left;
-        break;
+      targets.push_back(c);
+      std::vector<double> dist(open.size());
+      for (std::size_t i = 0; i < open.size(); ++i) dist[i] = std::hypot(open[i].x - c.x, open[i].y - c.y);
+      for (int t = 0; t < 3; ++t) {
+        const std::size_t far = static_cast<std::size_t>(std::max_element(dist.begin(), dist.end()) - dist.begin());
+        if (dist[far] < 2 * r) break;
+        targets.push_back(open[far]);
+        for (std::size_t i = 0; i < open.size(); ++i) dist[i] = std::min(dist[i], std::hypot(open[i].x - open[far].x, open[i].y - open[far].y));
       }
     }
+    struct Cand {
+      double gain, cost;
+      std::size_t j;
+      PointD a, o;   // the tangent point on piece j, the circle's centre
+      bool operator<(const Cand& x) const { return std::make_tuple(-gain, cost, j) < std::make_tuple(-x.gain, x.cost, x.j); }
+    };
+    std::vector<Cand> cand;
+    auto addCircles = [&](std::size_t j, PointD f, PointD n, double d) {   // tangent at f, towards n
+      for (double k : {1.0, 0.5}) {
+        const double rho = k * d;
+        const PointD o{f.x + rho * n.x, f.y + rho * n.y};
+        std::size_t gain = 0;   // open centres the circle sweeps
+        for (const PointD& p : open)
+          if (std::abs(std::hypot(p.x - o.x, p.y - o.y) - rho) <= r) ++gain;
+        cand.push_back({static_cast<double>(gain), d / r + (k < 1 ? 0.5 : 0), j, f, o});
+      }
+    };
+    for (const PointD& c : targets)
+      for (std::size_t j = 0; j < path.segments.size(); ++j) {
+        const PathSegment& s = path.segments[j];
+        if (s.kind == PathSegment::Kind::kLine) {
+          const double dx = s.to.x - s.from.x, dy = s.to.y - s.from.y, len = std::hypot(dx, dy);
+          if (len < r / 2) continue;
+          const double ux = dx / len, uy = dy / len;
+          const double t = (c.x - s.from.x) * ux + (c.y - s.from.y) * uy;
+          const double side = (c.y - s.from.y) * ux - (c.x - s.from.x) * uy;   // > 0: c left of the line
+          const double d = std::abs(side);
+          if (t < r / 8 || t > len - r / 8 || d < r / 2 || d > 8 * r) continue;
+          addCircles(j, PointD{s.from.x + t * ux, s.from.y + t * uy}, PointD{side > 0 ? -uy : uy, side > 0 ? ux : -ux}, d);
+        } else {   // tangent to an arc at c's projection on it, where that lies r/8 inside its ends
+          const double R = std::hypot(s.from.x - s.center.x, s.from.y - s.center.y);
+          const double vx = c.x - s.center.x, vy = c.y - s.center.y, L = std::hypot(vx, vy);
+          if (R < r / 2 || L == 0) continue;
+          const double d = std::abs(L - R);
+          if (d < r / 2 || d > 8 * r) continue;
+          const double sweep = s.length() / R, margin = r / 8 / R;
+          double at = std::atan2(vy, vx) - std::atan2(s.from.y - s.center.y, s.from.x - s.center.x);
+          if (!s.ccw) at = -at;
+          at = std::fmod(at + 4 * M_PI, 2 * M_PI);
+          if (at < margin || at > sweep - margin) continue;
+          const PointD f{s.center.x + R * vx / L, s.center.y + R * vy / L};
+          addCircles(j, f, PointD{(c.x - f.x) / d, (c.y - f.y) / d}, d);
+        }
+      }
+    std::sort(cand.begin(), cand.end());
+    bool done = false;
+    for (std::size_t k = 0; k < cand.size() && k < 32 && !done; ++k) {
+      const Cand& x = cand[k];
+      if (x.gain * h * h < minArea * r * r / 2) break;   // sweeps too little of what is open
+      const PathSegment s = path.segments[x.j];
+      // the circle runs the way the piece heads at the tangent point a: counter-clockwise where its
+      // centre lies left of that heading
+      const bool line = s.kind == PathSegment::Kind::kLine;
+      const PointD head = line ? PointD{s.to.x - s.from.x, s.to.y - s.from.y}
+                               : (s.ccw ? PointD{-(x.a.y - s.center.y), x.a.x - s.center.x} : PointD{x.a.y - s.center.y, -(x.a.x - s.center.x)});
+      const bool ccw = head.x * (x.o.y - x.a.y) - head.y * (x.o.x - x.a.x) > 0;
+      const PointD far{2 * x.o.x - x.a.x, 2 * x.o.y - x.a.y};
+      const PathSegment half1 = PathSegment::arc(x.a, far, x.o, ccw), half2 = PathSegment::arc(far, x.a, x.o, ccw);
+      if (!pieceClear(check, half1) || !pieceClear(check, half2)) continue;
+      const PathSegment before = line ? PathSegment::line(s.from, x.a) : PathSegment::arc(s.from, x.a, s.center, s.ccw);
+      const PathSegment after = line ? PathSegment::line(x.a, s.to) : PathSegment::arc(x.a, s.to, s.center, s.ccw);
+      if (!line && (!pieceClear(check, before) || !pieceClear(check, after))) continue;   // a's rounding
+      std::vector<PathSegment> ins{before, half1, half2, after};
+      index.add(half1);
+      index.add(half2);
+      path.segments.erase(path.segments.begin() + static_cast<std::ptrdiff_t>(x.j));
+      path.segments.insert(path.segments.begin() + static_cast<std::ptrdiff_t>(x.j), ins.begin(), ins.end());
+      done = true;
+    }
+    if (!done) {
+      ++left;
+      continue;
+    }
+    ++made;
+    if (rounds <= 1) continue;
+    // what is still open, in 4-connected parts; pushed in reverse so the first part comes first
+    const std::uint32_t openMark = ++token;
+    for (long k : openCells)
+      if (!index.covered(at(k % nx, k / nx))) mark[static_cast<std::size_t>(k)] = openMark;
+    // each part keeps the group's order of cells (a group left whole is aimed at as before)
+    std::vector<long> stack;
+    std::size_t nParts = 0;
+    for (long k : openCells) {
+      if (mark[static_cast<std::size_t>(k)] != openMark) continue;
+      const std::uint32_t partMark = ++token;
+      ++nParts;
+      mark[static_cast<std::size_t>(k)] = partMark;
+      stack.assign(1, k);
+      while (!stack.empty()) {
+        const long q = stack.back();
+        stack.pop_back();
+        neighbours(q, [&](long n) {
+          if (mark[static_cast<std::size_t>(n)] == openMark) mark[static_cast<std::size_t>(n)] = partMark, stack.push_back(n);
+        });
+      }
+    }
+    std::vector<std::vector<long>> parts(nParts);
+    for (long k : openCells)
+      if (mark[static_cast<std::size_t>(k)] > openMark) parts[mark[static_cast<std::size_t>(k)] - openMark - 1].push_back(k);
+    for (auto it = parts.rbegin(); it != parts.rend(); ++it)
+      if (static_cast<double>(it->size()) * h * h >= minArea * r * r) work.emplace_back(std::move(*it), std::min(rounds - 1, budget(it->size())));
   }
   plan.statistics["patches"] = static_cast<double>(made);
   plan.statistics["patches_left"] = static_cast<double>(left);
