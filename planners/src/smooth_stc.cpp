@@ -130,6 +130,22 @@
 //    0.9966 → 0.9970; the 25-obstacle probe worlds: 0.9900 → 0.9918 for 6.8 % more turning
 //    (`patches=2`: 0.9906 for 0.4 %; 0.5 catches the wedges at the tour's corners too, at 1.4-1.8 ×
 //    the turning). Offline only, with the contour passes.
+//    Second version (ours), for open areas of 40-100 r² in cluttered worlds, which one circle aimed
+//    at the middle cut in two (the middle of the two halves then lies on the circle, and the group
+//    was not split again) or could not reach (no line within 8r of the middle): after each circle
+//    what is open is split again into connected parts, each patched on its own; the targets are
+//    the middle and up to three open centres farthest from those before; circles may be tangent to
+//    arcs (the contour loops of round obstacles are arcs); the candidate that sweeps the most open
+//    centres goes first, none under half of `patches` r²; and a group gets up to 3 + area / 8r²
+//    circles (at most 16). Decision: rank by what a circle sweeps, not by its size: every circle
+//    turns 360° whatever its radius, so sweeping more a circle means fewer circles. Measured on
+//    18 × 14 m worlds with 30 obstacles at r = 0.3 (seeds 9001-9006): 0.9833 → 0.9901 (worst
+//    0.9626 → 0.9886) with slightly less turning (54,364° → 54,290°); the figures of every
+//    experiment are in docs/smooth-stc.md. What it gives up: a part left below `patches` r² after
+//    a circle is not patched on, so on room-64-64-8.map at r = 0.5 (wedges of 0.5-1 r² beside the
+//    lanes' U-turns) 0.9900 → 0.9883 for 21 % less turning. Decision: `patches` stays 1 (0.5
+//    covers 0.9927 there, but costs 1.3 × the turning on the large robots' worlds, which cover 0.99
+//    at 1 already); a user who wants the wedges sets it.
 //  - Taut stretches (`taut`, ours): a grid map's contours are stairs of pixels, and their C-space
 //    contours scallops of arcs meeting in notches, some 30° of turning each way at every pixel. A
 //    stretch of up to 32 pieces within 0.0625 r of the line between its ends becomes that line
@@ -2184,7 +2200,7 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
                "gets its arc back after the tour where that sweeps less than r^2/8 more (mitre); or the C-space contour's "
                "arc (arc)"});
   p.push_back({"patches", ParamType::kDouble, "1", "0:1000|none",
-               "with the contour passes: bumps from the path into each group of robot centres that nothing sweeps, of at "
+               "with the contour passes: circles tangent to the path into each group of robot centres that nothing sweeps, of at "
                "least this area in r^2 (groups between obstacles more than 4r apart), or none"});
   p.push_back({"taut", ParamType::kDouble, "0.0625", "0:1",
                "stretches of the path (a grid map's staircase contours: scallops of arcs) that stay within this many r of "
