@@ -43,24 +43,36 @@ std::size_t Workspace::vertexCount() const {
   return n;
 }
 
+namespace {
+// Edge i of r crosses p's horizontal to the right of p. Which edges cross the horizontal is decided
+// exactly; on which side of p a crossing lies is decided in doubles when it is far from p (margin
+// far above double error), exactly otherwise.
+bool crossesRight(const Ring& r, std::size_t i, const Point& p, double px, double py) {
+  const Point& a = r[i];
+  const Point& b = r[(i + 1) % r.size()];
+  if ((a.y > p.y) == (b.y > p.y)) return false;
+  const double ax = a.x.get_d(), ay = a.y.get_d(), bx = b.x.get_d(), by = b.y.get_d();
+  const double xd = ax + (py - ay) * (bx - ax) / (by - ay);
+  const double margin = 1e-9 * (1 + std::abs(ax) + std::abs(bx) + std::abs(px));
+  if (xd > px + margin) return true;
+  if (xd < px - margin) return false;
+  return Rational(a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) > p.x;
+}
+}  // namespace
+
 bool insideRing(const Ring& r, const Point& p) {
-  // Which edges cross the horizontal line is decided exactly; on which side of p a crossing lies
-  // is decided in doubles when it is far from p (margin far above double error), exactly otherwise.
   bool in = false;
   const double px = p.x.get_d(), py = p.y.get_d();
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const Point& a = r[i];
-    const Point& b = r[(i + 1) % r.size()];
-    if ((a.y > p.y) == (b.y > p.y)) continue;
-    const double ax = a.x.get_d(), ay = a.y.get_d(), bx = b.x.get_d(), by = b.y.get_d();
-    const double xd = ax + (py - ay) * (bx - ax) / (by - ay);
-    const double margin = 1e-9 * (1 + std::abs(ax) + std::abs(bx) + std::abs(px));
-    bool right;
-    if (xd > px + margin) right = true;
-    else if (xd < px - margin) right = false;
-    else right = Rational(a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) > p.x;
-    if (right) in = !in;
-  }
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (crossesRight(r, i, p, px, py)) in = !in;
+  return in;
+}
+
+bool insideRing(const Ring& r, const Point& p, const std::vector<std::size_t>& edges) {
+  bool in = false;
+  const double px = p.x.get_d(), py = p.y.get_d();
+  for (std::size_t i : edges)
+    if (crossesRight(r, i, p, px, py)) in = !in;
   return in;
 }
 

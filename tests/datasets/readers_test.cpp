@@ -9,6 +9,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
+#include <utility>
 
 using namespace coverkit;
 namespace fs = std::filesystem;
@@ -189,6 +191,45 @@ TEST(GridPolygons, RingsTouchingThemselvesAreSplitAtThePinch) {
   const Workspace v = datasets::parseTextGrid("#....\n.#...\n.....\n", "corner.grid");
   EXPECT_NO_THROW(checkWorkspace(v));
   EXPECT_EQ(freeArea(v), Rational(13));
+}
+
+// checkWorkspace tests each hole against its outer ring through an index of the ring's edges by
+// height (a scan's outer ring may have tens of thousands of edges, and it has as many holes). A comb
+// of 400 teeth: holes in the teeth and in the body pass; a hole between two teeth (inside the ring's
+// box, outside the ring) is refused; and the parity over the edges a row lists agrees with the
+// parity over all edges at points in teeth, in gaps and below the comb.
+TEST(WorkspaceCheck, HolesAreTestedAgainstALargeOuterRingByRows) {
+  const int teeth = 400;
+  auto comb = [&] {
+    Ring r{Point{Rational(0), Rational(0)}, Point{Rational(2 * teeth), Rational(0)}};
+    for (int t = teeth - 1; t >= 0; --t)   // from right to left along the top: up a tooth, down into the gap
+      for (const auto& [x, y] : {std::pair<int, int>{2 * t + 1, 10}, {2 * t + 1, 20}, {2 * t, 20}, {2 * t, 10}})
+        if (!(t == 0 && x == 0 && y == 10)) r.push_back(Point{Rational(x), Rational(y)});
+    r.push_back(Point{Rational(0), Rational(10)});
+    return r;
+  };
+  auto square = [](Rational x, Rational y, Rational s) {
+    return Ring{Point{x, y}, Point{x, y + s}, Point{x + s, y + s}, Point{x + s, y}};   // clockwise: a hole
+  };
+  Workspace w;
+  w.name = "comb";
+  w.regions.push_back(Region{comb(), {}});
+  for (int t = 0; t < teeth; t += 7) w.regions[0].holes.push_back(square(Rational(2 * t) + Rational(1, 4), Rational(15), Rational(1, 2)));
+  w.regions[0].holes.push_back(square(Rational(5), Rational(3), Rational(2)));
+  EXPECT_NO_THROW(checkWorkspace(w));
+  Workspace gap = w;
+  gap.regions[0].holes.push_back(square(Rational(2 * 200 + 1) + Rational(1, 4), Rational(15), Rational(1, 2)));
+  expectInputError([&] { checkWorkspace(gap); }, "hole is outside its outer ring");
+  std::vector<std::size_t> all(w.regions[0].outer.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  for (const auto& [x, y, in] : {std::tuple<Rational, Rational, bool>{Rational(2 * 17) + Rational(1, 2), Rational(18), true},
+                                 {Rational(2 * 17 + 1) + Rational(1, 2), Rational(18), false},
+                                 {Rational(401, 3), Rational(5), true},
+                                 {Rational(401, 3), Rational(-1), false}}) {
+    const Point p{x, y};
+    EXPECT_EQ(insideRing(w.regions[0].outer, p), in);
+    EXPECT_EQ(insideRing(w.regions[0].outer, p, all), in);
+  }
 }
 
 TEST(LoadMap, UnknownExtensionAndMissingFile) {
