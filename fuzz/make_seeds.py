@@ -157,6 +157,8 @@ def main():
     out("fuzz_wkt", "multipolygon", "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1)), ((5 0, 7 0, 6 3, 5 0)))\n")
     out("fuzz_wkt", "polygon-z", "POLYGON Z ((0 0 1, 3 0 1, 3 3 1, 0 3 1, 0 0 1))")
     out("fuzz_wkt", "polygon-zm", "polygon zm ((0 0 1 2, 1e1 0 1 2, 0.5 2.5e0 1 2, 0 0 1 2))")
+    # a reproducer: a ring 2e-308 high once sent a double past size_t in checkWorkspace's row grid
+    out("fuzz_wkt", "ring-of-no-height", "polygon zm ((5 0 1 2, 1e1 0 1 2, 0.5 2e-308, 0 0 1 2))")
     out("fuzz_geojson", "field-ring", read("field_ring.geojson"))
     out("fuzz_geojson", "multipolygon", '{"type":"MultiPolygon","coordinates":[[[[0,0],[3,0],[3,3],[0,0]]],[[[4,0],[6,0],[6,2],[4,2],[4,0]]]]}')
     out("fuzz_geojson", "lonlat", '{"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":'

@@ -3,6 +3,8 @@
 #include <coverkit/geometry/error.h>
 #include <coverkit/geometry/types.h>
 
+#include "edge_index.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -163,49 +165,25 @@ void checkWorkspace(const Workspace& w) {
     }
     return b;
   };
-  // An outer ring's edges by horizontal rows (double heights with the boxes' margin), so that the
-  // parity test of a point reads only the edges whose heights may span its own: every hole of a
-  // scan is tested against its outer ring, which may have tens of thousands of edges.
-  struct RingRows {
-    const Ring* ring = nullptr;
-    double y0 = 0, h = 1;
-    std::vector<std::vector<std::size_t>> rows;
-    explicit RingRows(const Ring& r) : ring(&r) {
-      const std::size_t n = r.size();
-      std::vector<double> ys(n);
-      double y1 = -1e300;
-      y0 = 1e300;
-      for (std::size_t i = 0; i < n; ++i) ys[i] = r[i].y.get_d(), y0 = std::min(y0, ys[i]), y1 = std::max(y1, ys[i]);
-      auto margin = [](double y) { return 1e-9 * (1 + std::abs(y)); };
-      // as many rows as edges (at most 4096), fewer while the edges would fill more than 16 slots each
-      std::size_t k = std::min<std::size_t>(n, 4096);
-      for (;; k /= 2) {
-        h = std::max((y1 - y0) / static_cast<double>(k), 1e-300);
-        std::size_t slots = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-          const double lo = std::min(ys[i], ys[(i + 1) % n]), hi = std::max(ys[i], ys[(i + 1) % n]);
-          slots += row(hi + margin(hi), k) - row(lo - margin(lo), k) + 1;
-        }
-        if (slots <= 16 * n || k == 1) break;
-      }
-      rows.assign(k, {});
-      for (std::size_t i = 0; i < n; ++i) {
-        const double lo = std::min(ys[i], ys[(i + 1) % n]), hi = std::max(ys[i], ys[(i + 1) % n]);
-        for (std::size_t j = row(lo - margin(lo), k); j <= row(hi + margin(hi), k); ++j) rows[j].push_back(i);
-      }
-    }
-    std::size_t row(double y, std::size_t k) const {
-      const double t = (y - y0) / h;
-      return t <= 0 ? 0 : std::min(k - 1, static_cast<std::size_t>(t));
-    }
-    /// p strictly inside the ring (p on no edge), py = p.y rounded to a double
-    bool inside(const Point& p, double py) const { return insideRing(*ring, p, rows[row(py, rows.size())]); }
+  // The parity test of a point against an outer ring reads only the ring's edges that the bucket
+  // grid lists on the ray to its right (edge_index.h): every hole of a scan is tested against its
+  // outer ring, which may have tens of thousands of edges.
+  detail::EdgeIndex index(w);
+  std::vector<std::size_t> crossing;
+  auto insideOuter = [&](std::size_t ri, const Point& p, const PointD& pd, double xmax) {
+    const Ring& ring = w.regions[ri].outer;
+    const Point* first = ring.data();
+    const double e = 1e-9 * (1 + std::abs(pd.x) + std::abs(pd.y));
+    crossing.clear();
+    index.query(pd.x - e, pd.y - e, xmax + e, pd.y + e, [&](const detail::IndexedEdge& s) {
+      if (s.a >= first && s.a < first + ring.size()) crossing.push_back(static_cast<std::size_t>(s.a - first));
+    });
+    return insideRing(ring, p, crossing);
   };
   std::vector<RingBox> outerBox;
-  std::vector<RingRows> outerRows;
   std::vector<std::vector<RingBox>> holeBoxes(w.regions.size());
   for (std::size_t ri = 0; ri < w.regions.size(); ++ri) {
-    outerBox.push_back(boxOf(w.regions[ri].outer)), outerRows.emplace_back(w.regions[ri].outer);
+    outerBox.push_back(boxOf(w.regions[ri].outer));
     for (const Ring& h : w.regions[ri].holes) holeBoxes[ri].push_back(boxOf(h));
   }
   for (std::size_t ri = 0; ri < w.regions.size(); ++ri) {
@@ -215,7 +193,7 @@ void checkWorkspace(const Workspace& w) {
       // the midpoint of an edge is on no other ring (rings meet only at vertices)
       const Point m{Rational((reg.holes[h][0].x + reg.holes[h][1].x) / 2), Rational((reg.holes[h][0].y + reg.holes[h][1].y) / 2)};
       const PointD md{m.x.get_d(), m.y.get_d()};
-      if (!outerBox[ri].may(md) || !outerRows[ri].inside(m, md.y))
+      if (!outerBox[ri].may(md) || !insideOuter(ri, m, md, outerBox[ri].x1))
         throw InputError(w.name, where(ri, static_cast<int>(h), 0), "hole is outside its outer ring");
       for (std::size_t h2 = 0; h2 < reg.holes.size(); ++h2)
         if (h2 != h && holeBox[h2].may(md) && insideRing(reg.holes[h2], m))
@@ -224,7 +202,7 @@ void checkWorkspace(const Workspace& w) {
     const Point m{Rational((reg.outer[0].x + reg.outer[1].x) / 2), Rational((reg.outer[0].y + reg.outer[1].y) / 2)};
     const PointD md{m.x.get_d(), m.y.get_d()};
     for (std::size_t rj = 0; rj < w.regions.size(); ++rj) {
-      if (rj == ri || !outerBox[rj].may(md) || !outerRows[rj].inside(m, md.y)) continue;
+      if (rj == ri || !outerBox[rj].may(md) || !insideOuter(rj, m, md, outerBox[rj].x1)) continue;
       bool inHole = false;
       for (std::size_t h = 0; h < w.regions[rj].holes.size() && !inHole; ++h)
         inHole = holeBoxes[rj][h].may(md) && insideRing(w.regions[rj].holes[h], m);

@@ -193,12 +193,12 @@ TEST(GridPolygons, RingsTouchingThemselvesAreSplitAtThePinch) {
   EXPECT_EQ(freeArea(v), Rational(13));
 }
 
-// checkWorkspace tests each hole against its outer ring through an index of the ring's edges by
-// height (a scan's outer ring may have tens of thousands of edges, and it has as many holes). A comb
-// of 400 teeth: holes in the teeth and in the body pass; a hole between two teeth (inside the ring's
-// box, outside the ring) is refused; and the parity over the edges a row lists agrees with the
-// parity over all edges at points in teeth, in gaps and below the comb.
-TEST(WorkspaceCheck, HolesAreTestedAgainstALargeOuterRingByRows) {
+// checkWorkspace tests each hole against its outer ring over the edges the workspace's edge index
+// lists on the ray to the hole's right (a scan's outer ring may have tens of thousands of edges,
+// and it has as many holes). A comb of 400 teeth: holes in the teeth and in the body pass; a hole
+// between two teeth (inside the ring's box, outside the ring) is refused; and the parity over a
+// list of edges agrees with the parity over the whole ring at points in teeth, in gaps and below.
+TEST(WorkspaceCheck, HolesAreTestedAgainstALargeOuterRingThroughTheEdgeIndex) {
   const int teeth = 400;
   auto comb = [&] {
     Ring r{Point{Rational(0), Rational(0)}, Point{Rational(2 * teeth), Rational(0)}};
@@ -230,6 +230,20 @@ TEST(WorkspaceCheck, HolesAreTestedAgainstALargeOuterRingByRows) {
     EXPECT_EQ(insideRing(w.regions[0].outer, p), in);
     EXPECT_EQ(insideRing(w.regions[0].outer, p, all), in);
   }
+}
+
+// Rings of almost no height (a fuzzer's reproducer: a vertex at y = 2e-308) are checked exactly and
+// without a double sent past an integer's range on the way (a grid of rows over the ring's height
+// once did, which the UBSan build aborts on): the ring is accepted, a hole inside it too, and a hole
+// above it is refused.
+TEST(WorkspaceCheck, RingsOfAlmostNoHeightAreChecked) {
+  const Workspace z = datasets::parseWkt("polygon zm ((5 0 1 2, 1e1 0 1 2, 0.5 2e-308, 0 0 1 2))", "z.wkt");
+  ASSERT_EQ(z.regions.size(), 1u);
+  EXPECT_GT(freeArea(z), Rational(0));
+  const Workspace t = datasets::parseWkt("POLYGON((0 0, 10 0, 10 1e-300, 0 1e-300),(1 2e-301, 1 4e-301, 2 4e-301, 2 2e-301))", "t.wkt");
+  ASSERT_EQ(t.regions[0].holes.size(), 1u);
+  expectInputError([] { datasets::parseWkt("POLYGON((0 0, 10 0, 10 1e-300, 0 1e-300),(1 2e-300, 1 4e-300, 2 4e-300, 2 2e-300))", "a.wkt"); },
+                   "hole is outside its outer ring");
 }
 
 TEST(LoadMap, UnknownExtensionAndMissingFile) {

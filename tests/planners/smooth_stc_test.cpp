@@ -22,6 +22,18 @@ namespace {
 
 Workspace polygonWorld(std::uint64_t seed, int size, int obstacles) { return testing_helpers::mixedWorld(seed, size, obstacles); }
 
+/// A seeded world of coverage-vs-complexity's generator: width × height m, `count` obstacles of
+/// `minSize`-`maxSize` m of one shape.
+Workspace seededWorld(int width, int height, int count, double minSize, double maxSize, datasets::ObstacleShape shape, std::uint64_t seed) {
+  datasets::PolygonWorldSpec spec;
+  spec.width = width, spec.height = height;
+  spec.count = count;
+  spec.minSize = minSize, spec.maxSize = maxSize;
+  spec.shape = shape;
+  spec.seed = seed;
+  return datasets::generatePolygonWorld(spec);
+}
+
 double coverable(const planners::PlanningContext& ctx, const Plan& plan) {
   MetricOptions o;
   o.coverable = true;
@@ -230,15 +242,9 @@ TEST(SmoothStc, NoReversalsFromRoundingOrGrazingContacts) {
 // the worlds of experiments/configs/smooth_stc_large_robots.yaml): with the default patches=1 the
 // plan is exactly valid and the same twice, has patches, no reversal, covers at least 0.3 points
 // more of the coverable region than without (0.9893 against 0.9817 when written), and turns by
-// exactly 360° more a patch (each is a circle tangent to a line of the path: no corner).
+// exactly 360° more a patch (each is a circle tangent to a line or an arc of the path: no corner).
 TEST(SmoothStc, PatchesReachPocketsBetweenObstaclesThatNoSweepReaches) {
-  datasets::PolygonWorldSpec spec;
-  spec.width = spec.height = 16;
-  spec.count = 15;
-  spec.minSize = 1, spec.maxSize = 2;
-  spec.shape = datasets::ObstacleShape::kMixed;
-  spec.seed = 1;
-  const auto ctx = testing_helpers::contextFor(datasets::generatePolygonWorld(spec), Rational(2, 5));
+  const auto ctx = testing_helpers::contextFor(seededWorld(16, 16, 15, 1, 2, datasets::ObstacleShape::kMixed, 1), Rational(2, 5));
   const Plan patched = planners::runPlanner("smooth_stc", ctx, {});
   const Plan none = planners::runPlanner("smooth_stc", ctx, {{"patches", "none"}});
   ASSERT_TRUE(testing_helpers::planIsValid(ctx, patched));
@@ -265,13 +271,7 @@ TEST(SmoothStc, PatchesReachPocketsBetweenObstaclesThatNoSweepReaches) {
 TEST(SmoothStc, PatchesSplitAndReachIntoLargeOpenAreas) {
   for (const int seed : {9001, 9002}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    datasets::PolygonWorldSpec spec;
-    spec.width = 18, spec.height = 14;
-    spec.count = 30;
-    spec.minSize = 0.5, spec.maxSize = 2.5;
-    spec.shape = datasets::ObstacleShape::kMixed;
-    spec.seed = static_cast<std::uint64_t>(seed);
-    const auto ctx = testing_helpers::contextFor(datasets::generatePolygonWorld(spec), Rational(3, 10));
+    const auto ctx = testing_helpers::contextFor(seededWorld(18, 14, 30, 0.5, 2.5, datasets::ObstacleShape::kMixed, static_cast<std::uint64_t>(seed)), Rational(3, 10));
     const Plan patched = planners::runPlanner("smooth_stc", ctx, {});
     const Plan none = planners::runPlanner("smooth_stc", ctx, {{"patches", "none"}});
     ASSERT_TRUE(testing_helpers::planIsValid(ctx, patched));
@@ -291,13 +291,7 @@ TEST(SmoothStc, PatchesSplitAndReachIntoLargeOpenAreas) {
 // two close discs in an open area was left unspliced before (0.9728 of the coverable region, the
 // area round them unswept); every loop is spliced now and the plan covers 0.9904.
 TEST(SmoothStc, EveryContourLoopIsSplicedWhereTheLeastTurningJointsAreBlocked) {
-  datasets::PolygonWorldSpec spec;
-  spec.width = 16, spec.height = 16;
-  spec.count = 25;
-  spec.minSize = 0.4, spec.maxSize = 2.2;
-  spec.shape = datasets::ObstacleShape::kDisc;
-  spec.seed = 7101;
-  const auto ctx = testing_helpers::contextFor(datasets::generatePolygonWorld(spec), Rational(9, 20));
+  const auto ctx = testing_helpers::contextFor(seededWorld(16, 16, 25, 0.4, 2.2, datasets::ObstacleShape::kDisc, 7101), Rational(9, 20));
   const Plan plan = planners::runPlanner("smooth_stc", ctx, {});
   ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
   EXPECT_GE(plan.statistics.at("contours_passed"), 8);

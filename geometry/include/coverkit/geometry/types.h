@@ -52,8 +52,8 @@ struct Workspace {
 /// that cannot, such as an edge midpoint of a ring that only touches others at vertices).
 bool insideRing(const Ring& ring, const Point& p);
 /// The same parity over the listed edges only (edge i joins vertex i and i + 1): callers that index
-/// a large ring's edges by height pass those whose heights may span p's (every edge that crosses
-/// p's horizontal must be listed).
+/// a large ring's edges pass those an index lists on the ray to p's right (every edge that crosses
+/// p's horizontal to its right must be listed).
 bool insideRing(const Ring& ring, const Point& p, const std::vector<std::size_t>& edges);
 /// Exact twice-signed area of a ring (counter-clockwise positive).
 Rational signedArea2(const Ring& ring);
