@@ -872,6 +872,134 @@ public:
     }
   }
 
+  /// Rooms online (smooth_stc_online, rooms=travel): what the offline rooms pass does, from what the
+  /// robot knows when it is where it leaves its path. As it goes, the robot senses the mega-cell it
+  /// is in and the four beside it (the obstacle sensor, which throws on any other question); it
+  /// knows a sub-cell's state only in a mega-cell it has sensed (the rings reported there decide
+  /// it; it is read from the cell grid, which holds what those rings give). A pass is the offline
+  /// one (travelPass) with each way held to what the robot knew before the piece of the path it
+  /// leaves from: the search goes from a source on piece k only into mega-cells sensed before piece
+  /// k (knownAt_), so a room is entered from the path only after the robot came near it. What no
+  /// pass reaches (a room the robot learnt of only after its last source near it) is looked for
+  /// from where the path ends, the robot's last position, with all it knows (endSearch).
+  /// Decision: a room learnt of late is reached from the end of the path, by a longer way, rather
+  /// than from a point the robot had passed before it knew of the room.
+  void travelOnline(Path& path) {
+    if (failedOnline_.empty()) failedOnline_.assign(cells_.megaCount(), 0);
+    for (;;) {
+      senseAll(path);
+      if (travelPass(path, failedOnline_, false, false)) continue;
+      if (!endSearch(path)) return;
+    }
+  }
+
+  /// The robot senses along the whole path, in order: knownAt_[m] is 1 + the first piece along
+  /// which it sensed mega-cell m (what is known before piece k began: knownAt_ ≤ k).
+  void senseAll(const Path& path) {
+    knownAt_.assign(cells_.megaCount(), std::numeric_limits<std::size_t>::max());
+    sensedFrom_.assign(cells_.megaCount(), 0);
+    for (std::size_t k = 0; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
+  }
+
+  /// From the end of the path, with all the robot knows: the nearest sub-cell of a known free
+  /// mega-cell in no tree, over known free sub-cells, the first step never back the way the path
+  /// came (a reversal); the way there and the room's tour are appended (the robot goes on from
+  /// there). Returns whether a room was toured.
+  bool endSearch(Path& path) {
+    const int sc = cells_.subCols();
+    const std::size_t now = path.segments.size();
+    auto knownFree = [&](int c, int r) {
+      return cells_.insideSub(c, r) && knownAt_[megaIndex(c / 2, r / 2)] <= now && cells_.sub(c, r) == CellState::kFree;
+    };
+    for (;;) {
+      if (path.segments.empty()) return false;
+      const PointD at = path.segments.back().to, heading = unitHeading(path.segments.back(), true);
+      CellIndex s;
+      if (!cells_.locateSubD(at, s) || !knownFree(s.col, s.row)) return false;
+      const int start = s.row * sc + s.col;
+      std::vector<int> parent(cells_.subCount(), -2), queue{start};
+      parent[static_cast<std::size_t>(start)] = -1;
+      int found = -1;
+      for (std::size_t head = 0; head < queue.size() && found < 0; ++head) {
+        const int v = queue[head], col = v % sc, row = v / sc;
+        const std::size_t m = megaIndex(col / 2, row / 2);
+        if (v != start && cells_.mega(col / 2, row / 2) == CellState::kFree && !inTree_[m] && !failedOnline_[m]) {
+          found = v;
+          break;
+        }
+        for (int d = 0; d < 4; ++d) {
+          const int c = col + graph::kDx[d], r = row + graph::kDy[d];
+          if (!knownFree(c, r) || parent[static_cast<std::size_t>(r * sc + c)] != -2) continue;
+          if (v == start) {   // the first move: from `at` to the start's centre, then to (c, r)
+            const PointD q = cells_.subCenterD(c, r);
+            const double dx = q.x - at.x, dy = q.y - at.y, n = std::hypot(dx, dy);
+            if (n > 0 && (heading.x * dx + heading.y * dy) / n < kReversalCos) continue;
+          }
+          parent[static_cast<std::size_t>(r * sc + c)] = v;
+          queue.push_back(r * sc + c);
+        }
+      }
+      if (found < 0) return false;
+      const CellIndex ec{found % sc, found / sc};
+      const std::size_t room = megaIndex(ec.col / 2, ec.row / 2);
+      std::vector<int> chain{found};   // e back to the start
+      while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
+      std::vector<PointD> way{at};
+      for (std::size_t i = chain.size(); i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
+      std::vector<PathSegment> there = mergedLines(way);
+      while (!there.empty() && there.front().length() <= 1e-9 * cells_.subSizeD()) there.erase(there.begin());   // at the centre already
+      std::vector<CellIndex> pw = pocketWalk_(ec);
+      bool ok = pw.size() >= 3 && pw.front() == ec && pw.back() == ec && !there.empty();
+      std::vector<std::size_t> marked;
+      PlacedWalk placed;
+      if (ok) {
+        for (const CellIndex& c : pw)
+          if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
+        placed = placeWalk(ctx_, pw, cells_.subCenter(ec.col, ec.row), false);
+        ok = placed.unsafeCells.empty() && placed.startClear && !placed.path.segments.empty();
+      }
+      if (ok) {
+        std::vector<PathSegment>& ps = placed.path.segments;
+        while (ps.size() > 1 && ps.front().kind == PathSegment::Kind::kLine && ps.front().length() < 1e-9 * cells_.subSizeD()) ps.erase(ps.begin());
+        there.back().to = ps.front().from;
+        for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
+      }
+      if (!ok) {
+        for (std::size_t m : marked) inTree_[m] = 0;
+        failedOnline_[room] = 1;
+        ++roomsLeft_;
+        continue;
+      }
+      tour(pw, placed.path);   // the room's sweeps, made online as the robot reaches them
+      path.segments.insert(path.segments.end(), there.begin(), there.end());
+      path.segments.insert(path.segments.end(), placed.path.segments.begin(), placed.path.segments.end());
+      ++roomsJoined_;
+      return true;
+    }
+  }
+
+  /// The robot senses, at points along `p` (every quarter sub-cell), the mega-cell it is in and the
+  /// four beside it, once from each mega-cell it passes; what it senses is known from `when` on.
+  void senseAlong(const PathSegment& p, std::size_t when) {
+    const double len = p.length(), step = cells_.subSizeD() / 4;
+    const std::size_t n = static_cast<std::size_t>(std::min(1e7, std::ceil(len / step))) + 1;
+    for (std::size_t i = 0; i <= n; ++i) {
+      CellIndex c;
+      if (!cells_.locateSubD(pointAlong(p, len * static_cast<double>(i) / static_cast<double>(n), len), c)) continue;
+      const int col = c.col / 2, row = c.row / 2;
+      if (sensedFrom_[megaIndex(col, row)] || cells_.mega(col, row) == CellState::kBlocked) continue;
+      sensedFrom_[megaIndex(col, row)] = 1;
+      sensor_->moveTo(col, row);
+      for (int d = 0; d <= 4; ++d) {
+        const int nc = col + (d < 4 ? graph::kDx[d] : 0), nr = row + (d < 4 ? graph::kDy[d] : 0);
+        if (!cells_.insideMega(nc, nr)) continue;
+        sensor_->sense(nc, nr);
+        std::size_t& k = knownAt_[megaIndex(nc, nr)];
+        k = std::min(k, when);
+      }
+    }
+  }
+
   /// Gaps (gaps=visit): free sub-cells that the path, with its rooms, leaves uncovered (two of five
   /// points, the centre and four at r/2 from it, farther than r from every piece: estimated in
   /// doubles, it only chooses where to go). They lie in partially occupied mega-cells that no sweep
@@ -942,7 +1070,12 @@ public:
       CellIndex c;
       if (!cells_.locateSubD(p, c) || cells_.sub(c.col, c.row) != CellState::kFree) return;
       const PointD q = cells_.subCenterD(c.col, c.row);
-      if (std::abs(q.x - p.x) > tol || std::abs(q.y - p.y) > tol || sourceOf[index(c.col, c.row)] >= 0) return;
+      if (std::abs(q.x - p.x) > tol || std::abs(q.y - p.y) > tol) return;
+      if (const std::int64_t was = sourceOf[index(c.col, c.row)]; was >= 0) {
+        // online, a sub-cell the path passes again is left from its last pass, when the robot knows most
+        if (sensor_) sources[static_cast<std::size_t>(was)] = {k, p};
+        return;
+      }
       sourceOf[index(c.col, c.row)] = static_cast<std::int64_t>(sources.size());
       sources.push_back({k, p});
       queue.push_back(static_cast<int>(index(c.col, c.row)));
@@ -1024,6 +1157,12 @@ public:
     }
     std::vector<int> parent(cells_.subCount(), -2);
     for (int v : queue) parent[static_cast<std::size_t>(v)] = -1;
+    // online: the piece each search leaves the path from; it goes only where the robot knew by then
+    std::vector<std::size_t> leftFrom;
+    if (sensor_) {
+      leftFrom.assign(cells_.subCount(), 0);
+      for (int v : queue) leftFrom[static_cast<std::size_t>(v)] = sources[static_cast<std::size_t>(sourceOf[static_cast<std::size_t>(v)])].segment;
+    }
     // excursions by segment: (where on it, the pieces)
     std::vector<std::vector<std::pair<PointD, std::vector<PathSegment>>>> at(path.segments.size());
     std::set<std::pair<int, int>> leaving;   // (source sub-cell, first step) of the ways taken
@@ -1041,15 +1180,18 @@ public:
       if ((parent[static_cast<std::size_t>(v)] >= 0 || fromJoint) && target) any = visitRoom(path, v, parent, sources, sourceOf, pending, leaving, failed, gaps) || any;
       for (int d = 0; d < 4; ++d) {
         const int c = col + graph::kDx[d], r = row + graph::kDy[d];
-        if (!cells_.insideSub(c, r) || cells_.sub(c, r) != CellState::kFree || parent[index(c, r)] != -2) continue;
+        if (!cells_.insideSub(c, r) || parent[index(c, r)] != -2) continue;
+        if (sensor_ && knownAt_[megaIndex(c / 2, r / 2)] > leftFrom[static_cast<std::size_t>(v)]) continue;   // not known yet there
+        if (cells_.sub(c, r) != CellState::kFree) continue;
         parent[index(c, r)] = v;
+        if (sensor_) leftFrom[index(c, r)] = leftFrom[static_cast<std::size_t>(v)];
         queue.push_back(static_cast<int>(index(c, r)));
       }
     }
     if (!any) {
       // a room no chain from the lanes reaches (only then the joints' pass, which costs a pass)
       unreachedRooms_ = false;
-      if (gaps || joints) return false;
+      if (gaps || joints || sensor_) return false;
       laneReached_.assign(parent.size(), 0);
       for (std::size_t v = 0; v < parent.size(); ++v) {
         laneReached_[v] = parent[v] != -2;
@@ -1196,6 +1338,8 @@ private:
   ClearanceChecker& check_;
   PocketWalk pocketWalk_;
   std::vector<std::uint8_t> inTree_, swept_;
+  std::vector<std::uint8_t> sensedFrom_, failedOnline_;   ///< online rooms: mega-cells sensed from (this pass), rooms failed
+  std::vector<std::size_t> knownAt_;   ///< online rooms: 1 + the first piece of the path along which each mega-cell was sensed
   std::vector<PathSegment> precovered_;
   std::set<std::array<int, 4>> runsDone_;
   std::size_t inserted_ = 0, rejected_ = 0, unreached_ = 0, shared_ = 0, arcs_ = 0, pocketsJoined_ = 0, pocketsLeft_ = 0;
@@ -1630,13 +1774,18 @@ ContourLoops contourLoops(const PlanningContext& ctx, ClearanceChecker& check, c
 /// 3r of a joint (or, with none there, each joint's nearest vertex) by the turning they add, the
 /// first 64; if every line of those is blocked, the 256 joints nearest the loop (rings of 3r cells
 /// grown from its vertices), nearest first. `nearOnly`: the loops of rooms behind gaps exactly 2r
-/// wide, spliced only from a joint within 3r.
+/// wide, spliced only from a joint within 3r. `firstContact` (the online robot, with `nearOnly`):
+/// at the first joint in path order within 3r of the loop, where it turns the least there, and
+/// never with a turn of more than 150° (a reversal: the loop is left then): the robot goes round a
+/// contour when it first comes to it, not where the whole path would turn least.
 void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std::vector<std::vector<PathSegment>>& loops, Path& path,
-                 Plan& plan, bool nearOnly = false) {
+                 Plan& plan, bool nearOnly = false, bool firstContact = false, std::vector<std::uint8_t>* spliced = nullptr) {
   const double r = ctx.problem.robots.at(0).radius.get_d();
   auto ang = [](PointD a, PointD b) { return std::acos(std::max(-1.0, std::min(1.0, a.x * b.x + a.y * b.y))); };
   std::size_t done = 0, left = 0;
-  for (const std::vector<PathSegment>& pc : loops) {
+  for (std::size_t li = 0; li < loops.size(); ++li) {
+    if (spliced && (*spliced)[li]) continue;
+    const std::vector<PathSegment>& pc = loops[li];
     const std::size_t n = pc.size();
     // vertex buckets (side 3r)
     const double cell = 3 * r;
@@ -1715,8 +1864,15 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
       }
       return false;
     };
-    std::sort(cand.begin(), cand.end());
-    bool spliced = splice(cand);
+    if (firstContact) {   // online: the first joint in path order; none with a reversal (the loop is left)
+      cand.erase(std::remove_if(cand.begin(), cand.end(), [](const Cand& c) { return c.cost >= 10; }), cand.end());
+      std::sort(cand.begin(), cand.end(), [](const Cand& a, const Cand& b) { return std::make_pair(a.j, a) < std::make_pair(b.j, b); });
+    } else {
+      std::sort(cand.begin(), cand.end());
+    }
+    const bool ok = splice(cand);
+    if (ok && spliced) (*spliced)[li] = 1;
+    bool spliced = ok;
     if (!spliced && !nearOnly) {
       // every line of the cheapest was blocked (the joints that turn least may lie across an
       // obstacle): the nearest joints first, whose lines are the likeliest to be clear
@@ -2194,6 +2350,24 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
     refiner.travel(path, params.text("gaps") == "visit");
     plan.timings.emplace_back("rooms and gaps", std::chrono::duration<double>(Clock::now() - t2).count());
   }
+  if (online) {
+    // the contour loops the path comes to, then the rooms the robot knows from its path, and again
+    // from what the rooms' tours and the loops spliced into them came to, until nothing changes
+    const auto t2 = Clock::now();
+    ContourLoops l;
+    if (passContours(ctx, params)) l = contourLoops(ctx, check, path, plan, false);
+    l.start.insert(l.start.end(), l.others.begin(), l.others.end());
+    std::vector<std::uint8_t> spliced(l.start.size(), 0);
+    const bool rooms = params.text("rooms") == "travel";
+    for (std::size_t before = static_cast<std::size_t>(-1); before != path.segments.size();) {
+      before = path.segments.size();
+      if (!l.start.empty()) spliceLoops(ctx, check, l.start, path, plan, true, true, &spliced);
+      if (rooms) refiner.travelOnline(path);
+    }
+    plan.statistics["contours_passed"] = static_cast<double>(std::count(spliced.begin(), spliced.end(), std::uint8_t{1}));
+    plan.statistics["contours_unspliced"] = static_cast<double>(spliced.size()) - plan.statistics["contours_passed"];
+    plan.timings.emplace_back("contours and rooms", std::chrono::duration<double>(Clock::now() - t2).count());
+  }
   // the loops of the rooms reached through gaps exactly 2r wide, from a joint within 3r of them
   if (!loops.start.empty() && !loops.others.empty()) spliceLoops(ctx, check, loops.others, path, plan, true);
   if (!online && !loops.start.empty()) restoreArcs(ctx, loops.mitres, path, plan);
@@ -2330,6 +2504,14 @@ std::string SmoothStcOnlinePlanner::description() const {
 std::vector<ParamSpec> SmoothStcOnlinePlanner::params() const {
   std::vector<ParamSpec> p = SpiralStcPlanner::params();
   for (const ParamSpec& e : entryParam()) p.push_back(e);
+  p.push_back({"contours", ParamType::kChoice, "auto", "auto|pass|none",
+               "one pass along each boundary loop of C-free (a wall's or an obstacle's C-space contour) that the path "
+               "comes within 3r of, from the first joint there in path order, followed with the sensor (pass); none "
+               "(the paper's); auto: pass on maps of at most 20000 vertices"});
+  p.push_back({"rooms", ParamType::kChoice, "travel", "travel|leave",
+               "free mega-cells that no tour or sweep reaches, once the robot knows them (sensed from where it has "
+               "been): after its tour it goes from room to room along known free sub-cells and tours each with its "
+               "own tree (travel), or leaves them (leave, the paper's)"});
   return p;
 }
 
