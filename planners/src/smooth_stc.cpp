@@ -465,6 +465,7 @@ public:
     plan.statistics["detours_skipped"] = static_cast<double>(skipped_);
     plan.statistics["rooms_joined"] = static_cast<double>(roomsJoined_);
     plan.statistics["rooms_left"] = static_cast<double>(roomsLeft_);
+    if (sensor_) plan.statistics["rooms_from_end"] = static_cast<double>(roomsFromEnd_);
     plan.statistics["gaps_visited"] = static_cast<double>(gapsJoined_);
     plan.statistics["gaps_left"] = static_cast<double>(gapsLeft_);
     plan.statistics["excursions_dropped"] = static_cast<double>(excursionsDropped_);
@@ -886,10 +887,21 @@ public:
   /// than from a point the robot had passed before it knew of the room.
   void travelOnline(Path& path) {
     if (failedOnline_.empty()) failedOnline_.assign(cells_.megaCount(), 0);
-    for (;;) {
-      senseAll(path);
-      if (travelPass(path, failedOnline_, false, false)) continue;
-      if (!endSearch(path)) return;
+    // a known free mega-cell in no tree (else no search)
+    auto roomKnown = [&] {
+      for (int row = 0; row < cells_.megaRows(); ++row)
+        for (int col = 0; col < cells_.megaCols(); ++col) {
+          const std::size_t m = megaIndex(col, row);
+          if (cells_.mega(col, row) == CellState::kFree && !inTree_[m] && !failedOnline_[m] && knownAt_[m] != std::numeric_limits<std::size_t>::max())
+            return true;
+        }
+      return false;
+    };
+    senseAll(path);
+    while (roomKnown() && travelPass(path, failedOnline_, false, false)) senseAll(path);   // ways inserted within the path: sensed again in order
+    // then from the end, with all the robot knows (each search senses what it appends): every room
+    // known from a sub-cell the end is joined to through known free sub-cells
+    while (roomKnown() && endSearch(path)) {
     }
   }
 
@@ -973,15 +985,19 @@ public:
       tour(pw, placed.path);   // the room's sweeps, made online as the robot reaches them
       path.segments.insert(path.segments.end(), there.begin(), there.end());
       path.segments.insert(path.segments.end(), placed.path.segments.begin(), placed.path.segments.end());
+      for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
       ++roomsJoined_;
+      ++roomsFromEnd_;
       return true;
     }
   }
 
-  /// The robot senses, at points along `p` (every quarter sub-cell), the mega-cell it is in and the
-  /// four beside it, once from each mega-cell it passes; what it senses is known from `when` on.
+  /// The robot senses, at points along `p` (every sub-cell, half a mega-cell: a mega-cell a piece
+  /// only clips at a corner may be missed, which only leaves the robot knowing less), the mega-cell
+  /// it is in and the four beside it, once from each mega-cell it passes; what it senses is known
+  /// from `when` on.
   void senseAlong(const PathSegment& p, std::size_t when) {
-    const double len = p.length(), step = cells_.subSizeD() / 4;
+    const double len = p.length(), step = cells_.subSizeD();
     const std::size_t n = static_cast<std::size_t>(std::min(1e7, std::ceil(len / step))) + 1;
     for (std::size_t i = 0; i <= n; ++i) {
       CellIndex c;
@@ -1345,6 +1361,7 @@ private:
   std::size_t inserted_ = 0, rejected_ = 0, unreached_ = 0, shared_ = 0, arcs_ = 0, pocketsJoined_ = 0, pocketsLeft_ = 0;
   std::size_t traced_ = 0;  ///< sweeps (of any outcome) made by the direct trace
   std::size_t skipped_ = 0; ///< detours left out: what they would sweep was swept already
+  std::size_t roomsFromEnd_ = 0;   ///< online: rooms reached from where the path ended (endSearch)
   std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
   std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
   std::size_t excursionsDropped_ = 0, passes_ = 0;
@@ -2363,6 +2380,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
       before = path.segments.size();
       if (!l.start.empty()) spliceLoops(ctx, check, l.start, path, plan, true, true, &spliced);
       if (rooms) refiner.travelOnline(path);
+      if (l.start.empty()) break;   // no loops: the rooms pass has done all it can
     }
     plan.statistics["contours_passed"] = static_cast<double>(std::count(spliced.begin(), spliced.end(), std::uint8_t{1}));
     plan.statistics["contours_unspliced"] = static_cast<double>(spliced.size()) - plan.statistics["contours_passed"];
