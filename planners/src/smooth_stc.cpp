@@ -982,15 +982,11 @@ public:
       std::vector<std::size_t> marked;
       PlacedWalk placed;
       if (ok) {
-        for (const CellIndex& c : pw)
-          if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
-        placed = placeWalk(ctx_, pw, cells_.subCenter(ec.col, ec.row), false);
+        placed = placeRoom(pw, ec, marked);
         ok = placed.unsafeCells.empty() && placed.startClear && !placed.path.segments.empty();
       }
       if (ok) {
-        std::vector<PathSegment>& ps = placed.path.segments;
-        while (ps.size() > 1 && ps.front().kind == PathSegment::Kind::kLine && ps.front().length() < 1e-9 * cells_.subSizeD()) ps.erase(ps.begin());
-        there.back().to = ps.front().from;
+        joinWay(there, placed.path.segments);
         for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
       }
       if (!ok) {
@@ -1294,6 +1290,21 @@ public:
   }
 
 private:
+  /// A room's walk `pw` (from ec back to ec) placed from ec's centre, the mega-cells it newly puts
+  /// in a tree marked so and listed in `marked` (to be taken back if the room is left).
+  PlacedWalk placeRoom(const std::vector<CellIndex>& pw, CellIndex ec, std::vector<std::size_t>& marked) {
+    for (const CellIndex& c : pw)
+      if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
+    return placeWalk(ctx_, pw, cells_.subCenter(ec.col, ec.row), false);
+  }
+
+  /// The way `there` joined to the placed tour `ps`: the tour's move from e's exact centre to its
+  /// placed one (an ulp, or nothing) is left out, and the way ends where the tour starts.
+  void joinWay(std::vector<PathSegment>& there, std::vector<PathSegment>& ps) const {
+    while (ps.size() > 1 && ps.front().kind == PathSegment::Kind::kLine && ps.front().length() < 1e-9 * cells_.subSizeD()) ps.erase(ps.begin());
+    there.back().to = ps.front().from;
+  }
+
   bool visitRoom(const Path& path, int e, const std::vector<int>& parent, const std::vector<Source>& sources, const std::vector<std::int64_t>& sourceOf,
                  std::vector<Excursion>& pending, std::set<std::pair<int, int>>& leaving, std::vector<std::uint8_t>& failed,
                  bool gaps) {
@@ -1318,12 +1329,9 @@ private:
     for (std::size_t i = chain.size() - 1; i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
     std::vector<PathSegment> there = mergedLines(way);
     std::vector<std::size_t> marked;
-    if (!gaps)
-      for (const CellIndex& c : pw)
-        if (!inTree_[megaIndex(c.col / 2, c.row / 2)]) marked.push_back(megaIndex(c.col / 2, c.row / 2)), inTree_[marked.back()] = 1;
     PlacedWalk placed;
     if (!gaps) {
-      placed = placeWalk(ctx_, pw, cells_.subCenter(ec.col, ec.row), false);
+      placed = placeRoom(pw, ec, marked);
     } else if (pw.size() == 1) {   // one gap: there and back
       placed.path.segments.push_back(PathSegment::line(way.back(), way.back()));
     } else {   // centre to centre, straight runs merged, each line checked exactly below
@@ -1336,10 +1344,7 @@ private:
     // way back starts where it ends, with no joint between
     std::vector<PathSegment> back;
     if (ok) {
-      // the move from e's exact centre to its placed one (an ulp, or nothing) is left out
-      std::vector<PathSegment>& ps = placed.path.segments;
-      while (ps.size() > 1 && ps.front().kind == PathSegment::Kind::kLine && ps.front().length() < 1e-9 * cells_.subSizeD()) ps.erase(ps.begin());
-      there.back().to = placed.path.segments.front().from;
+      joinWay(there, placed.path.segments);
       for (std::size_t i = there.size(); i-- > 0;) back.push_back(PathSegment::line(there[i].to, there[i].from));
       back.front().from = placed.path.segments.back().to;
     }
@@ -1811,14 +1816,16 @@ ContourLoops contourLoops(const PlanningContext& ctx, ClearanceChecker& check, c
 /// wide, spliced only from a joint within 3r. `firstContact` (the online robot, with `nearOnly`):
 /// at the first joint in path order within 3r of the loop, where it turns the least there, and
 /// never with a turn of more than 150° (a reversal: the loop is left then): the robot goes round a
-/// contour when it first comes to it, not where the whole path would turn least.
+/// contour when it first comes to it, not where the whole path would turn least. `splicedLoops`:
+/// the loops spliced (by an earlier call too, which this one skips); only these add to
+/// `contours_turning_deg`.
 void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std::vector<std::vector<PathSegment>>& loops, Path& path,
-                 Plan& plan, bool nearOnly = false, bool firstContact = false, std::vector<std::uint8_t>* spliced = nullptr) {
+                 Plan& plan, bool nearOnly = false, bool firstContact = false, std::vector<std::uint8_t>* splicedLoops = nullptr) {
   const double r = ctx.problem.robots.at(0).radius.get_d();
   auto ang = [](PointD a, PointD b) { return std::acos(std::max(-1.0, std::min(1.0, a.x * b.x + a.y * b.y))); };
   std::size_t done = 0, left = 0;
   for (std::size_t li = 0; li < loops.size(); ++li) {
-    if (spliced && (*spliced)[li]) continue;
+    if (splicedLoops && (*splicedLoops)[li]) continue;
     const std::vector<PathSegment>& pc = loops[li];
     const std::size_t n = pc.size();
     // vertex buckets (side 3r)
@@ -1904,9 +1911,7 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
     } else {
       std::sort(cand.begin(), cand.end());
     }
-    const bool ok = splice(cand);
-    if (ok && spliced) (*spliced)[li] = 1;
-    bool spliced = ok;
+    bool spliced = splice(cand);
     if (!spliced && !nearOnly) {
       // every line of the cheapest was blocked (the joints that turn least may lie across an
       // obstacle): the nearest joints first, whose lines are the likeliest to be clear
@@ -1947,6 +1952,10 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
       spliced = splice(cand);
     }
     if (spliced) ++done; else ++left;
+    if (splicedLoops) {   // called again for the loops still left (online): each loop counted once, when spliced
+      if (!spliced) continue;
+      (*splicedLoops)[li] = 1;
+    }
     double turn = 0;   // the loop's own turning: its joints and its arcs
     for (std::size_t i = 0; i < n; ++i) {
       turn += std::abs(coverkit::turnAt(pc[i], pc[(i + 1) % n]));
