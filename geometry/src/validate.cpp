@@ -52,14 +52,26 @@ Expr dist(const ExprPoint& a, const ExprPoint& b) {
   ExprPoint d = sub(a, b);
   return sqrt(dot(d, d));
 }
-Expr pointSegDistance(const ExprPoint& p, const ExprPoint& a, const ExprPoint& b) {
-  ExprPoint ab = sub(b, a), ap = sub(p, a);
-  Expr l2 = dot(ab, ab);
-  if (l2 == 0) return dist(p, a);
-  Expr t = dot(ap, ab) / l2;
-  if (t <= 0) return dist(p, a);
-  if (t >= 1) return dist(p, b);
-  return abs(cross(ab, ap)) / sqrt(l2);
+/// Whether p lies closer than R to segment ab; `found` gets the distance (for the message). Squared
+/// comparisons, no division: an arc's jump can be shorter than a double resolves (its two ends
+/// round to the same doubles), and a division by its length made CORE's filter warn of a possible
+/// zero divisor. CORE writes each warning to a file "Core_Diagnostics" in the working directory
+/// (thousands in a sweep over seeded worlds) and ends the process when it cannot open it.
+bool pointSegBelow(const ExprPoint& p, const ExprPoint& a, const ExprPoint& b, const Expr& R, Expr& found) {
+  const ExprPoint ab = sub(b, a), ap = sub(p, a);
+  const Expr l2 = dot(ab, ab), s = dot(ap, ab), R2 = R * R;
+  if (l2 == 0 || s <= 0 || s >= l2) {   // nearest to an end
+    const ExprPoint q = l2 == 0 || s <= 0 ? ap : sub(p, b);
+    const Expr d2 = dot(q, q);
+    if (!(d2 < R2)) return false;
+    found = sqrt(d2);
+    return true;
+  }
+  const Expr c = cross(ab, ap);
+  if (!(c * c < R2 * l2)) return false;
+  const double len = std::sqrt(l2.doubleValue());   // the message's distance, in doubles
+  found = len > 0 ? Expr(std::abs(c.doubleValue()) / len) : sqrt(dot(ap, ap));
+  return true;
 }
 /// Whether segments ab and cd come closer than R: they cross, or an end is closer than R to the
 /// other segment. Each candidate is compared with R on its own: comparing two candidates with each
@@ -72,12 +84,8 @@ bool segSegBelow(const ExprPoint& a, const ExprPoint& b, const ExprPoint& c, con
     found = Expr(0);
     return true;
   }
-  for (const Expr& e : {pointSegDistance(a, c, d), pointSegDistance(b, c, d), pointSegDistance(c, a, b), pointSegDistance(d, a, b)})
-    if (e < R) {
-      found = e;
-      return true;
-    }
-  return false;
+  return pointSegBelow(a, c, d, R, found) || pointSegBelow(b, c, d, R, found) || pointSegBelow(c, a, b, R, found) ||
+         pointSegBelow(d, a, b, R, found);
 }
 
 /// Beyond this magnitude the double pre-filters (squares of coordinate differences) could overflow
@@ -158,7 +166,7 @@ int axisPiecesClear(const IPointA& A, const IPointA& B, const IPointA& C, const 
   return d2 >= r2 ? 1 : 0;
 }
 
-/// ≤ the distance from p to segment ab (pointSegDistance); 0 when ab may be degenerate. Call
+/// ≤ the distance from p to segment ab (pointSegBelow); 0 when ab may be degenerate. Call
 /// under CGAL::Protect_FPU_rounding<true>.
 IA lbPointSeg(const IPointA& p, const IPointA& a, const IPointA& b) {
   const IPointA ab = asub(b, a), ap = asub(p, a);
@@ -438,25 +446,30 @@ public:
       const Expr qa = dot(d, d), qb = 2 * dot(pc, d), qc = dot(pc, pc) - ex(rho2);
       const Expr disc = qb * qb - 4 * qa * qc;
       bool hit = false;
+      // No division by qa (an edge ~1e-160 long has a qa that is 0 in doubles, and CORE's filter
+      // then warns into a file, see pointSegBelow): s = n / 2qa is compared as n with 2qa, and the
+      // point X on the circle is taken as (X − C)·2qa, which inRange (signs only) reads the same.
       if (qa != 0 && disc >= 0) {
-        const Expr sq = sqrt(disc);
-        for (const Expr& s : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
-          if (s < 0 || s > 1) continue;
-          ExprPoint X{P.x + s * d.x, P.y + s * d.y};
-          if (inRange(sub(X, C))) hit = true;
+        const Expr sq = sqrt(disc), q2 = 2 * qa;
+        for (const Expr& n : {-qb - sq, -qb + sq}) {
+          if (n < 0 || n > q2) continue;
+          if (inRange(ExprPoint{pc.x * q2 + n * d.x, pc.y * q2 + n * d.y})) hit = true;
         }
       }
       bool close = hit;
       if (hit) found = Expr(0);
-      close = close || below(pointSegDistance(F, P, Q)) || below(pointSegDistance(Tp, P, Q)) || pointArcBelow(P) ||
+      close = close || pointSegBelow(F, P, Q, R, found) || pointSegBelow(Tp, P, Q, R, found) || pointArcBelow(P) ||
               pointArcBelow(Q) || (jump && segSegBelow(Tp, T, P, Q, R, found));
-      if (!close && qa != 0) {
-        const Expr s = -dot(pc, d) / qa;  // foot of c on the line
-        if (s > 0 && s < 1) {
-          ExprPoint H{P.x + s * d.x, P.y + s * d.y};
-          ExprPoint v = sub(H, C);
-          const Expr hd = sqrt(dot(v, v));
-          if (hd >= rho && inRange(v)) close = below(hd - rho);
+      if (!close && qa != 0) {   // the foot H of c on the line, s = n / qa, as w = (H − C)·qa
+        const Expr n = -dot(pc, d);
+        if (n > 0 && n < qa) {
+          const ExprPoint w{pc.x * qa + n * d.x, pc.y * qa + n * d.y};
+          const Expr wl = sqrt(dot(w, w));   // |H − C|·qa
+          if (wl >= rho * qa && inRange(w) && wl < (rho + R) * qa) {
+            close = true;
+            const double q = qa.doubleValue();   // the message's distance, in doubles
+            found = Expr(q > 0 ? wl.doubleValue() / q - rho.doubleValue() : 0.0);
+          }
         }
       }
       if (close) {

@@ -14,7 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 
 using namespace coverkit;
 
@@ -283,6 +286,30 @@ TEST(SmoothStc, PatchesSplitAndReachIntoLargeOpenAreas) {
     EXPECT_LE(mp.reversals, mn.reversals);
     if (seed == 9002) EXPECT_EQ(testing_helpers::pathJsonOf(patched), testing_helpers::pathJsonOf(planners::runPlanner("smooth_stc", ctx, {})));
   }
+}
+
+// The validator's exact arc tests write nothing and need no writable folder: an arc whose end lies
+// off its circle by less than a double resolves (a jump an ulp long) made CORE warn of a possible
+// zero divisor, and CORE appends each warning to "Core_Diagnostics" in the working directory and
+// ends the process (exit code 1) where it cannot open that file. This world (coverage-vs-
+// complexity's generator, 25 obstacles, seed 1, r = 0.25) wrote thousands of warnings; validated
+// now from an empty folder (planned, rounded by the pipeline's fillet and validated there), the
+// folder stays empty and the plan is valid.
+TEST(SmoothStc, ValidatingItsArcsWritesNoFile) {
+  namespace fs = std::filesystem;
+  const fs::path here = fs::current_path(), empty = fs::temp_directory_path() / ("coverkit-validate-" + std::to_string(::getpid()));
+  fs::remove_all(empty);
+  fs::create_directories(empty);
+  fs::current_path(empty);
+  const auto ctx = testing_helpers::contextFor(seededWorld(20, 20, 25, 1, 3, datasets::ObstacleShape::kMixed, 1), Rational(1, 4));
+  std::vector<optimise::PostStep> steps;   // rounded, as in the pipeline: the fillet's arcs
+  for (const std::string& t : planners::defaultPostProcessing("smooth_stc", {})) steps.push_back(optimise::parsePostStep(t));
+  const Plan plan = optimise::postProcess(ctx.problem, planners::runPlanner("smooth_stc", ctx, {}), steps);
+  const ::testing::AssertionResult valid = testing_helpers::planIsValid(ctx, plan);
+  fs::current_path(here);
+  EXPECT_TRUE(valid);
+  EXPECT_TRUE(fs::is_empty(empty)) << "the validator wrote into " << empty;
+  fs::remove_all(empty);
 }
 
 // A contour loop is spliced into the path at the joint that turns least towards one of its vertices
