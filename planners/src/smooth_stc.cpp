@@ -2457,8 +2457,11 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   if (!loops.start.empty() && !loops.others.empty()) spliceLoops(ctx, check, loops.others, path, plan, true);
   if (!online && !loops.start.empty()) restoreArcs(ctx, loops.mitres, path, plan);
   double unswept = 0;   // the share of the coverable region left unswept, estimated (fill_below)
-  if (!online && !loops.start.empty()) {
-    const bool patches = params.text("patches") != "none";
+  // offline only (the online planner has neither parameter); without the patches the sampling
+  // runs only where corners=auto reads its estimate
+  const bool patches = !online && params.text("patches") != "none";
+  const bool estimate = !online && params.text("corners") == "auto" && params.number("fill_below") > 0;
+  if (!loops.start.empty() && (patches || estimate)) {
     const SampledSweep e = patchBlobs(ctx, check, path, plan, patches ? params.number("patches") : std::numeric_limits<double>::infinity());
     double band = 0;   // the coverable band between C-free and the obstacles: r along every loop
     for (const auto& l : loops.start)
