@@ -561,6 +561,31 @@ TEST(SmoothStc, OnlineRobotFindsRoomsAndContoursFromWhatItSensed) {
   EXPECT_GT(rooms, 0);
 }
 
+// At 30 obstacles (r = 0.4 on 16 m) C-free between obstacles more than 4r apart across partially
+// occupied mega-cells is reached by no sweep, loop or room: the online robot patches it as the
+// offline planner does, each circle checked only against the obstacles of mega-cells it had sensed
+// before the piece the circle leaves from (Refiner::knownBefore). It covers within 0.5 points of
+// the offline planner (before the patches: 1.3 and 1.9 points below it on these two worlds), more
+// than without them, and deterministically; every plan is valid.
+TEST(SmoothStc, OnlineRobotPatchesWhatItSensedAndNoSweepReaches) {
+  for (std::uint64_t seed : {9101u, 9102u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto ctx = testing_helpers::contextFor(seededWorld(16, 16, 30, 0.8, 2, datasets::ObstacleShape::kMixed, seed), Rational(2, 5));
+    const Plan offline = planners::runPlanner("smooth_stc", ctx, {});
+    const Plan online = planners::runPlanner("smooth_stc_online", ctx, {});
+    const Plan without = planners::runPlanner("smooth_stc_online", ctx, {{"patches", "none"}});
+    for (const Plan* p : {&offline, &online, &without}) ASSERT_TRUE(testing_helpers::planIsValid(ctx, *p));
+    EXPECT_GT(online.statistics.at("patches"), 0);
+    EXPECT_EQ(without.statistics.count("patches"), 0u);
+    const double cOff = coverable(ctx, offline), cOn = coverable(ctx, online), cWithout = coverable(ctx, without);
+    EXPECT_GE(cOn, cOff - 0.005);
+    EXPECT_GT(cOn, cWithout + 0.005);
+    const Metrics mOn = computeMetrics(ctx.problem, ctx.cells, online.paths), mWithout = computeMetrics(ctx.problem, ctx.cells, without.paths);
+    EXPECT_LE(mOn.reversals, mWithout.reversals);
+    EXPECT_EQ(testing_helpers::pathJsonOf(online), testing_helpers::pathJsonOf(planners::runPlanner("smooth_stc_online", ctx, {})));
+  }
+}
+
 TEST(SmoothStc, ObstacleSensorAnswersOnlyAboutTheRobotsNeighbourhood) {
   const auto ctx = testing_helpers::contextFor(polygonWorld(21, 10, 5), Rational(1, 4));
   planners::ObstacleSensor sensor(ctx.problem.workspace, ctx.cells);
