@@ -255,6 +255,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// `patches`, offline and online; `checked` says what a circle is checked against.
+ParamSpec patchesParam(const std::string& checked) {
+  return {"patches", ParamType::kDouble, "1", "0:1000|none",
+          "with the contour passes: circles tangent to the path into each group of robot centres that nothing sweeps, of at "
+          "least this area in r^2 (groups between obstacles more than 4r apart), " + checked + "; or none"};
+}
+
 std::vector<ParamSpec> entryParam() {
   return {{"entries", ParamType::kChoice, "every", "every|parent",
            "which free neighbours enter a partially occupied mega-cell: every one the tour passes (complete), or only "
@@ -966,17 +973,12 @@ public:
     return true;
   }
 
-  /// Senses along the path again without forgetting what it knows: only mega-cells not sensed yet
-  /// are asked about (the circles the patches added).
-  void senseMore(const Path& path) {
-    for (std::size_t k = 0; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
-  }
-
   /// The robot senses along the whole path, in order: knownAt_[m] is 1 + the first piece along
   /// which it sensed mega-cell m (what is known before piece k began: knownAt_ ≤ k).
   void senseAll(const Path& path) {
     knownAt_.assign(cells_.megaCount(), std::numeric_limits<std::size_t>::max());
     sensedFrom_.assign(cells_.megaCount(), 0);
+    asked_.resize(cells_.megaCount(), 0);
     for (std::size_t k = 0; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
   }
 
@@ -1058,7 +1060,9 @@ public:
   /// The robot senses, at points along `p` (every sub-cell, half a mega-cell: a mega-cell a piece
   /// only clips at a corner may be missed, which only leaves the robot knowing less), the mega-cell
   /// it is in and the four beside it, once from each mega-cell it passes; what it senses is known
-  /// from `when` on.
+  /// from `when` on. The sensor is asked from a mega-cell only the first time (asked_): a replay of
+  /// the path (senseAll, after ways were inserted) recomputes when things became known from what
+  /// the robot already heard.
   void senseAlong(const PathSegment& p, std::size_t when) {
     const double len = p.length(), step = cells_.subSizeD();
     const std::size_t n = static_cast<std::size_t>(std::min(1e7, std::ceil(len / step))) + 1;
@@ -1068,11 +1072,13 @@ public:
       const int col = c.col / 2, row = c.row / 2;
       if (sensedFrom_[megaIndex(col, row)] || cells_.mega(col, row) == CellState::kBlocked) continue;
       sensedFrom_[megaIndex(col, row)] = 1;
-      sensor_->moveTo(col, row);
+      const bool ask = !asked_[megaIndex(col, row)];   // a replay (senseAll) remembers the answers
+      asked_[megaIndex(col, row)] = 1;
+      if (ask) sensor_->moveTo(col, row);
       for (int d = 0; d <= 4; ++d) {
         const int nc = col + (d < 4 ? graph::kDx[d] : 0), nr = row + (d < 4 ? graph::kDy[d] : 0);
         if (!cells_.insideMega(nc, nr)) continue;
-        sensor_->sense(nc, nr);
+        if (ask) sensor_->sense(nc, nr);
         std::size_t& k = knownAt_[megaIndex(nc, nr)];
         k = std::min(k, when);
       }
@@ -1427,6 +1433,7 @@ private:
   PocketWalk pocketWalk_;
   std::vector<std::uint8_t> inTree_, swept_;
   std::vector<std::uint8_t> sensedFrom_, failedOnline_;   ///< online rooms: mega-cells sensed from (this pass), rooms failed
+  std::vector<std::uint8_t> asked_;                       ///< online: mega-cells the sensor was asked from (ever)
   std::vector<std::size_t> knownAt_;   ///< online rooms: 1 + the first piece of the path along which each mega-cell was sensed
   std::vector<PathSegment> precovered_;
   std::set<std::array<int, 4>> runsDone_;
@@ -2506,7 +2513,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
       refiner.senseAll(path);
       patchBlobs(ctx, check, path, plan, params.number("patches"),
                  [&](const BoxD& b, std::size_t when) { return refiner.knownBefore(b, when); });
-      refiner.senseMore(path);
+      refiner.senseAll(path);   // along the circles: only mega-cells not asked from before
     }
   }
   // the loops of the rooms reached through gaps exactly 2r wide, from a joint within 3r of them
@@ -2591,9 +2598,7 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
                "least r long) becomes the two tangent lines to their crossing, which sweep the corner's whole square, and "
                "gets its arc back after the tour where that sweeps less than r^2/8 more (mitre); or the C-space contour's "
                "arc (arc)"});
-  p.push_back({"patches", ParamType::kDouble, "1", "0:1000|none",
-               "with the contour passes: circles tangent to the path into each group of robot centres that nothing sweeps, of at "
-               "least this area in r^2 (groups between obstacles more than 4r apart), or none"});
+  p.push_back(patchesParam("each circle checked exactly"));
   p.push_back({"taut", ParamType::kDouble, "0.0625", "0:1",
                "stretches of the path (a grid map's staircase contours: scallops of arcs) that stay within this many r of "
                "the line between their ends are replaced by the line where it turns less and is exactly clear; 0: none"});
@@ -2672,10 +2677,8 @@ std::vector<ParamSpec> SmoothStcOnlinePlanner::params() const {
                "free mega-cells that no tour or sweep reaches, once the robot knows them (sensed from where it has "
                "been): after its tour it goes from room to room along known free sub-cells and tours each with its "
                "own tree (travel), or leaves them (leave, the paper's)"});
-  p.push_back({"patches", ParamType::kDouble, "1", "0:1000|none",
-               "with the contour passes: circles tangent to the path into each group of robot centres that nothing "
-               "sweeps, of at least this area in r^2, each circle checked against the obstacles of mega-cells sensed "
-               "before the piece it leaves from; or none"});
+  p.push_back(patchesParam("each circle checked exactly against the obstacles of mega-cells sensed before the piece it "
+                           "leaves from"));
   return p;
 }
 
