@@ -45,11 +45,19 @@
 //    spliced as at that vertex (the line there and back would have a direction that is noise, and
 //    made the splice choose the loop's direction at random). A spur (a line back along the one
 //    before it) whose stretch beyond the nearer end other pieces sweep is cut off.
-//  - Gaps are left by default (`gaps=leave`; `gaps=visit`, the rule before): a gap's visit is a
-//    dead end left the way it was entered, a reversal, which the paper's promise of paths without
-//    reversing excludes. On coverage-vs-complexity's 204 worlds the visits added 0.01 points of
-//    the coverable region and all of the 0.07 reversals a plan that were left; for large robots
-//    (r = 1/40 of the width among 10-20 obstacles of 1-2 m) 0.17 points and 0.37 reversals a plan.
+//  - Gaps are visited only where nothing else can reach them (`gaps=auto`; `leave`, the default
+//    before; `visit`, every gap, the rule before that): a gap's visit is a dead end left the way it
+//    was entered, a reversal, which the paper's promise of paths without reversing excludes. On
+//    coverage-vs-complexity's 204 worlds visiting every gap added 0.01 points of the coverable
+//    region and all of the 0.07 reversals a plan that were left; for large robots (r = 1/40 of the
+//    width among 10-20 obstacles of 1-2 m) 0.17 points and 0.37 reversals a plan. But a corridor or
+//    door exactly 2r wide (a grid map's one-pixel passage at r of half a pixel) is C-free at r and
+//    closed at r + ε + δ, where the sweeps, loops and patches run: leaving it left the shelving of
+//    warehouse-20-40-10-2-2.map at r = 1 (0.43 of the coverable region against Full-STC's 0.99)
+//    and the one-pixel corridors of the Moving AI maps at r = 0.5 (below Full-STC on three of five).
+//    auto visits the groups of gaps that hold a sub-cell squeezed between edges on two opposite
+//    sides, a reversal at each dead end as Full-STC makes there; no world of our experiments has
+//    one (their plans are those of `leave` to the byte).
 //  - Fewer turns (our defaults; the paper's tree and every detour stay reachable with
 //    `tree=dfs_ccw;detours=every`): the paper promises paths no longer than Full-STC's, and turning
 //    is what costs a real robot time. The tree has long straight branches (`tree=auto`): of
@@ -451,6 +459,59 @@ private:
 /// The tour of a pocket's tree from a sub-cell (closed), or empty.
 using PocketWalk = std::function<std::vector<CellIndex>(CellIndex start)>;
 
+/// The workspace's edges by cell, for "is some obstacle edge within `reach` of this point" in
+/// doubles (the patches' samples, the pinched gaps): it decides only where to try, never safety.
+class EdgeIndex {
+public:
+  /// The workspace's edges by cell (side `reach`, coarser where that would exceed about a million
+  /// cells), listed per cell in two passes (count, then fill).
+  EdgeIndex(const Workspace& w, double reach, BoxD box) : reach_(reach), box_(box) {
+    const double W = box.xmax - box.xmin, H = box.ymax - box.ymin;
+    cell_ = std::max({reach, std::sqrt(W * H / (1024.0 * 1024)), std::max(W, H) / (1024.0 * 1024), 1e-300});
+    nx_ = static_cast<long>(W / cell_) + 1, ny_ = static_cast<long>(H / cell_) + 1;
+    for (const Ring* ring : w.rings())
+      for (std::size_t i = 0; i < ring->size(); ++i) {
+        const Point& p = (*ring)[i];
+        const Point& q = (*ring)[(i + 1) % ring->size()];
+        edges_.push_back({PointD{p.x.get_d(), p.y.get_d()}, PointD{q.x.get_d(), q.y.get_d()}});
+      }
+    auto each = [&](const std::pair<PointD, PointD>& e, auto&& f) {
+      const auto& [a, b] = e;
+      for (long y = key(std::min(a.y, b.y) - reach, box_.ymin, ny_); y <= key(std::max(a.y, b.y) + reach, box_.ymin, ny_); ++y)
+        for (long x = key(std::min(a.x, b.x) - reach, box_.xmin, nx_); x <= key(std::max(a.x, b.x) + reach, box_.xmin, nx_); ++x)
+          f(static_cast<std::size_t>(y * nx_ + x));
+    };
+    start_.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+    for (const auto& e : edges_) each(e, [&](std::size_t c) { ++start_[c + 1]; });
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    list_.resize(start_.back());
+    for (std::size_t e = 0; e < edges_.size(); ++e) each(edges_[e], [&](std::size_t c) { list_[fill[c]++] = static_cast<std::uint32_t>(e); });
+  }
+  /// No edge within `reach` of p.
+  bool clearOf(PointD p) const {
+    const auto c = static_cast<std::size_t>(key(p.y, box_.ymin, ny_) * nx_ + key(p.x, box_.xmin, nx_));
+    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
+      const auto& [a, b] = edges_[list_[k]];
+      const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+      const double t = l2 > 0 ? std::min(1.0, std::max(0.0, ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2)) : 0;
+      if (std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy) < reach_) return false;
+    }
+    return true;
+  }
+
+private:
+  long key(double v, double origin, long n) const {
+    return std::min(n - 1, std::max(0L, static_cast<long>((v - origin) / cell_)));
+  }
+  double reach_, cell_ = 1;
+  BoxD box_;
+  long nx_ = 1, ny_ = 1;
+  std::vector<std::pair<PointD, PointD>> edges_;
+  std::vector<std::size_t> start_;   ///< the edges of cell c: list_[start_[c] .. start_[c + 1])
+  std::vector<std::uint32_t> list_;
+};
+
 /// Puts the sweeps into the tour's path, and the tours of the pockets they reach into the sweeps.
 /// One per plan: the mega-cells in some tour, the runs swept end to end and the counts are shared
 /// by the main tour and the pockets' tours.
@@ -462,7 +523,7 @@ public:
       : ctx_(ctx), cells_(ctx.cells), sensor_(sensor), sweeper_(sweeper), trace_(params.text("sweeps") == "trace"),
         every_(params.text("entries") == "every"),
         throughRuns_(params.text("reach") == "run"), pockets_(params.text("pockets") == "join"),
-        needed_(!sensor && params.text("detours") == "needed"), check_(check),
+        needed_(!sensor && params.text("detours") == "needed"), onlineGaps_(sensor && params.text("gaps") == "auto"), check_(check),
         pocketWalk_(std::move(pocketWalk)), inTree_(cells_.megaCount(), 0), swept_(cells_.megaCount(), 0) {}
 
   /// The sweeps of `walk`'s openings (and the pockets behind them) inserted into its placed `path`.
@@ -912,7 +973,8 @@ public:
     bool joint = false;   ///< at the end of the segment, off the sub-cells' centres (a way's first line leaves it obliquely)
   };
 
-  void travel(Path& path, bool gaps) {
+  /// `gaps`: leave, visit, or auto (visit only the groups that hold a pinched sub-cell, markGaps).
+  void travel(Path& path, const std::string& gaps) {
     std::vector<std::uint8_t> failed(cells_.megaCount(), 0);
     bool rooms = false;   // a free mega-cell outside every tree: else no search
     for (int row = 0; row < cells_.megaRows() && !rooms; ++row)
@@ -922,8 +984,8 @@ public:
     // aligned with the map's axes) is looked for again from the path's joints
     while (rooms && (travelPass(path, failed, false, false) || (unreachedRooms_ && travelPass(path, failed, false, true)))) {
     }
-    if (!gaps) return;
-    markGaps(path);
+    if (gaps == "leave") return;
+    markGaps(path, gaps == "auto");
     if (std::find(gap_.begin(), gap_.end(), std::uint8_t{1}) == gap_.end()) return;
     while (travelPass(path, failed, true, false)) {
     }
@@ -987,7 +1049,12 @@ public:
   /// mega-cell in no tree, over known free sub-cells, the first step never back the way the path
   /// came (a reversal); the way there and the room's tour are appended (the robot goes on from
   /// there). Returns whether a room was toured.
-  /// With no room known, the robot explores: it goes to the nearest known free sub-cell from which
+  /// With no room known, the nearest pinched gap it knows (a free sub-cell the path leaves uncovered,
+  /// squeezed between edges on two opposite sides: a corridor exactly 2r wide, markGaps): the way
+  /// there and its group of gaps depth-first (each next sub-cell beside the robot's, so in a
+  /// mega-cell it has sensed; none in a free mega-cell, a room), ending at the last new one (`gaps_visited`), as the offline planner's
+  /// gaps=auto does; from there the first step may go back the way it came (a dead end exactly 2r
+  /// wide is left only so). With neither, the robot explores: it goes to the nearest known free sub-cell from which
   /// it would sense a mega-cell it has not (a frontier: one beside that sub-cell's mega-cell), and
   /// searches again from there (`frontier_trips`). Decision: the offline rooms pass reaches free
   /// mega-cells behind corridors exactly 2r wide (a grid map's one-pixel passages at r of half a
@@ -1001,6 +1068,10 @@ public:
     auto knownFree = [&](int c, int r) {
       return cells_.insideSub(c, r) && knownAt_[megaIndex(c / 2, r / 2)] <= now && cells_.sub(c, r) == CellState::kFree;
     };
+    const CoverIndex cover = coverIndexOf(path);
+    const bool mayReverse = endedInGap_;   // the path ends in a gap's walk
+    endedInGap_ = false;
+    if (failedGapOnline_.size() != cells_.subCount()) failedGapOnline_.assign(cells_.subCount(), 0);
     for (;;) {
       if (path.segments.empty()) return false;
       const PointD at = path.segments.back().to, heading = unitHeading(path.segments.back(), true);
@@ -1009,7 +1080,7 @@ public:
       const int start = s.row * sc + s.col;
       std::vector<int> parent(cells_.subCount(), -2), queue{start};
       parent[static_cast<std::size_t>(start)] = -1;
-      int found = -1;
+      int found = -1, gap = -1;
       std::vector<int> frontiers;   // in the search's order: nearest first
       auto unsensedBeside = [&](int col, int row) {
         for (int d = 0; d < 4; ++d) {
@@ -1026,10 +1097,11 @@ public:
           break;
         }
         if (v != start && frontiers.size() < kFrontiersTried && unsensedBeside(col, row)) frontiers.push_back(v);
+        if (onlineGaps_ && gap < 0 && v != start && !failedGapOnline_[static_cast<std::size_t>(v)] && gapAt(cover, col, row) && pinched(v)) gap = v;
         for (int d = 0; d < 4; ++d) {
           const int c = col + graph::kDx[d], r = row + graph::kDy[d];
           if (!knownFree(c, r) || parent[static_cast<std::size_t>(r * sc + c)] != -2) continue;
-          if (v == start) {   // the first move: from `at` to the start's centre, then to (c, r)
+          if (v == start && !mayReverse) {   // the first move: from `at` to the start's centre, then to (c, r)
             const PointD q = cells_.subCenterD(c, r);
             const double dx = q.x - at.x, dy = q.y - at.y, n = std::hypot(dx, dy);
             if (n > 0 && (heading.x * dx + heading.y * dy) / n < kReversalCos) continue;
@@ -1038,14 +1110,53 @@ public:
           queue.push_back(r * sc + c);
         }
       }
+      // the way from `at` to sub-cell t over the search's chain, straight runs merged
+      auto wayTo = [&](int t) {
+        std::vector<int> chain{t};
+        while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
+        std::vector<PointD> way{at};
+        for (std::size_t i = chain.size(); i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
+        std::vector<PathSegment> there = mergedLines(way);
+        while (!there.empty() && there.front().length() <= 1e-9 * cells_.subSizeD()) there.erase(there.begin());
+        return there;
+      };
+      if (found < 0 && gap >= 0) {   // a pinched gap (a corridor exactly 2r wide): there, and its group depth-first
+        markGaps(path, false);
+        // not into a free mega-cell: a room, toured with its own tree once found (next search)
+        for (std::size_t k = 0; k < gap_.size(); ++k)
+          if (gap_[k] && cells_.mega(static_cast<int>(k % sc) / 2, static_cast<int>(k / sc) / 2) == CellState::kFree) gap_[k] = 0;
+        std::vector<CellIndex> pw = gapWalk(gap);
+        if (pw.size() < 2) {   // a niche of one sub-cell, left as offline
+          failedGapOnline_[static_cast<std::size_t>(gap)] = 1;
+          continue;
+        }
+        // the walk ends at its last new sub-cell (the robot goes on from there, not back)
+        std::size_t last = 0;
+        std::set<std::pair<int, int>> seen;
+        for (std::size_t i = 0; i < pw.size(); ++i)
+          if (seen.insert({pw[i].col, pw[i].row}).second) last = i;
+        pw.resize(last + 1);
+        std::vector<PathSegment> there = wayTo(gap);
+        if (pw.size() > 1) {
+          const std::vector<PathSegment> walk = linesThrough(pw);
+          there.insert(there.end(), walk.begin(), walk.end());
+        }
+        bool ok = !there.empty();
+        for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
+        if (!ok) {
+          for (const CellIndex& c : pw) failedGapOnline_[static_cast<std::size_t>(c.row) * sc + c.col] = 1;
+          ++gapsLeft_;
+          continue;
+        }
+        path.segments.insert(path.segments.end(), there.begin(), there.end());
+        for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
+        ++gapsJoined_;
+        endedInGap_ = true;
+        return true;
+      }
       if (found < 0) {   // explore: the way to the nearest frontier whose way is exactly clear, sensing as it goes
         for (int frontier : frontiers) {
-          std::vector<int> chain{frontier};
-          while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
-          std::vector<PointD> way{at};
-          for (std::size_t i = chain.size(); i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
-          std::vector<PathSegment> there = mergedLines(way);
-          while (!there.empty() && there.front().length() <= 1e-9 * cells_.subSizeD()) there.erase(there.begin());
+          std::vector<PathSegment> there = wayTo(frontier);
           bool ok = !there.empty();
           for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
           if (!ok) continue;
@@ -1120,6 +1231,41 @@ public:
     }
   }
 
+  /// The path's pieces (and the loops counted before the detours) by bucket.
+  CoverIndex coverIndexOf(const Path& path) const {
+    CoverIndex index(ctx_.problem.robots.at(0).radius.get_d(), mapBox());
+    for (const PathSegment& p : path.segments) index.add(p);
+    for (const PathSegment& p : precovered_) index.add(p);
+    return index;
+  }
+
+  /// A free sub-cell that the path leaves uncovered, a gap: two of five points (the centre and four
+  /// at r/2 from it) farther than r from every piece; a tree's mega-cell is toured through every one
+  /// of its sub-cells' centres, so none of its sub-cells is.
+  bool gapAt(const CoverIndex& index, int col, int row) const {
+    if (cells_.sub(col, row) != CellState::kFree || (cells_.mega(col / 2, row / 2) == CellState::kFree && inTree_[megaIndex(col / 2, row / 2)]))
+      return false;
+    const double r = ctx_.problem.robots.at(0).radius.get_d();
+    const PointD c = cells_.subCenterD(col, row);
+    int missed = 0;
+    for (const PointD& d : {PointD{0, 0}, PointD{r / 2, 0}, PointD{-r / 2, 0}, PointD{0, r / 2}, PointD{0, -r / 2}})
+      missed += !index.covered(PointD{c.x + d.x, c.y + d.y});
+    return missed >= 2;
+  }
+
+  /// Sub-cell v is squeezed between obstacle edges on two opposite sides (markGaps).
+  bool pinched(int v) {
+    if (!pinchedEdges_) {
+      const double r = ctx_.problem.robots.at(0).radius.get_d(), slack = slackOf(ctx_.problem.workspace).get_d();
+      pinchedEdges_ = std::make_unique<EdgeIndex>(ctx_.problem.workspace, r + slack, mapBox());
+      pinchedShift_ = 2 * slack;
+    }
+    const double s2 = pinchedShift_;
+    const PointD c = cells_.subCenterD(v % cells_.subCols(), v / cells_.subCols());
+    const EdgeIndex& edges = *pinchedEdges_;
+    return (!edges.clearOf({c.x + s2, c.y}) && !edges.clearOf({c.x - s2, c.y})) || (!edges.clearOf({c.x, c.y + s2}) && !edges.clearOf({c.x, c.y - s2}));
+  }
+
   /// Gaps (gaps=visit): free sub-cells that the path, with its rooms, leaves uncovered (two of five
   /// points, the centre and four at r/2 from it, farther than r from every piece: estimated in
   /// doubles, it only chooses where to go). They lie in partially occupied mega-cells that no sweep
@@ -1127,23 +1273,42 @@ public:
   /// holds. Each 4-connected group of them is toured depth-first from the nearest, from centre to
   /// centre (each move in the union of two free sub-cells), as Full-STC goes through a partially
   /// occupied mega-cell; a dead end one sub-cell wide is left the way it was entered.
-  void markGaps(const Path& path) {
-    const double r = ctx_.problem.robots.at(0).radius.get_d();
-    CoverIndex index(r, mapBox());
-    for (const PathSegment& p : path.segments) index.add(p);
-    for (const PathSegment& p : precovered_) index.add(p);
+  /// `pinchedOnly` (gaps=auto): only the groups of at least two sub-cells (a niche of one is worth
+  /// less than its reversal) that hold a pinched sub-cell, one squeezed between
+  /// obstacle edges on two opposite sides: its centre moved by 2(ε + δ) towards either side (both
+  /// along x, or both along y) lies within r + ε + δ of an edge (doubles; it only chooses where to
+  /// go). That is a corridor or door exactly 2r wide (a grid map's one-pixel passage at r of half a
+  /// pixel): C-free at r but not at r + ε + δ, the radius of the sweeps and the contour passes, so
+  /// no sweep, pass or patch reaches it or what lies behind it. A sub-cell with an edge on one side
+  /// only (an obstacle's side on the sub-cell grid) is not pinched: the contour pass runs beside it.
+  void markGaps(const Path& path, bool pinchedOnly) {
+    const CoverIndex index = coverIndexOf(path);
     gap_.assign(cells_.subCount(), 0);
     for (int row = 0; row < cells_.subRows(); ++row)
-      for (int col = 0; col < cells_.subCols(); ++col) {
-        // a tree's mega-cell is toured through every one of its sub-cells' centres
-        if (cells_.sub(col, row) != CellState::kFree || (cells_.mega(col / 2, row / 2) == CellState::kFree && inTree_[megaIndex(col / 2, row / 2)]))
-          continue;
-        const PointD c = cells_.subCenterD(col, row);
-        int missed = 0;
-        for (const PointD& d : {PointD{0, 0}, PointD{r / 2, 0}, PointD{-r / 2, 0}, PointD{0, r / 2}, PointD{0, -r / 2}})
-          missed += !index.covered(PointD{c.x + d.x, c.y + d.y});
-        gap_[static_cast<std::size_t>(row) * cells_.subCols() + col] = missed >= 2;
+      for (int col = 0; col < cells_.subCols(); ++col) gap_[static_cast<std::size_t>(row) * cells_.subCols() + col] = gapAt(index, col, row);
+    if (!pinchedOnly) return;
+    const int sc = cells_.subCols();
+    std::vector<std::uint8_t> keep(gap_.size(), 0);
+    std::vector<int> group;
+    for (std::size_t k = 0; k < gap_.size(); ++k) {
+      if (gap_[k] != 1) continue;
+      group.assign(1, static_cast<int>(k));
+      gap_[k] = 2;   // seen
+      bool pinched = false;
+      for (std::size_t head = 0; head < group.size(); ++head) {
+        const int v = group[head];
+        pinched = pinched || this->pinched(v);
+        for (int d = 0; d < 4; ++d) {
+          const int c = v % sc + graph::kDx[d], rr = v / sc + graph::kDy[d];
+          if (!cells_.insideSub(c, rr) || gap_[static_cast<std::size_t>(rr) * sc + c] != 1) continue;
+          gap_[static_cast<std::size_t>(rr) * sc + c] = 2;
+          group.push_back(rr * sc + c);
+        }
       }
+      if (pinched && group.size() >= 2)   // a niche of one sub-cell: a reversal for 4r²
+        for (int v : group) keep[static_cast<std::size_t>(v)] = 1;
+    }
+    gap_.swap(keep);
   }
 
   /// The closed depth-first walk over the group of gaps holding t, from t back to t; the group's
@@ -1463,7 +1628,7 @@ private:
   const CellGrid& cells_;
   ObstacleSensor* sensor_;
   OnlineSweeper* sweeper_;
-  bool trace_, every_, throughRuns_, pockets_, needed_;
+  bool trace_, every_, throughRuns_, pockets_, needed_, onlineGaps_;
   ClearanceChecker& check_;
   PocketWalk pocketWalk_;
   std::vector<std::uint8_t> inTree_, swept_;
@@ -1477,6 +1642,10 @@ private:
   std::size_t skipped_ = 0; ///< detours left out: what they would sweep was swept already
   std::size_t roomsFromEnd_ = 0;   ///< online: rooms reached from where the path ended (endSearch)
   std::size_t frontierTrips_ = 0;  ///< online: ways from the path's end to a frontier (endSearch)
+  std::unique_ptr<EdgeIndex> pinchedEdges_;   ///< the obstacle edges within r + ε + δ, for pinched()
+  double pinchedShift_ = 0;                   ///< 2(ε + δ), for pinched()
+  bool endedInGap_ = false;   ///< online: the path ends in a gap's walk (most likely a dead end, left the way it came)
+  std::vector<std::uint8_t> failedGapOnline_;   ///< online: pinched gaps whose visit was not exactly clear
   static constexpr std::size_t kFrontiersTried = 16;   ///< online: the nearest frontiers whose ways are checked, a search
   std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
   std::vector<std::uint8_t> gap_;   ///< free sub-cells left uncovered, not yet visited
@@ -2071,74 +2240,6 @@ void spliceLoops(const PlanningContext& ctx, ClearanceChecker& check, const std:
   plan.statistics["contours_unspliced"] += static_cast<double>(left);
 }
 
-/// Patches (ours): the places no sweep, pass or lane reaches. The sweeps stay inside their
-/// rectangles and the passes within 2r of a contour, so a pocket of C-free between obstacles that
-/// stand more than 4r apart across partially occupied mega-cells (large robots among obstacles
-/// about a mega-cell in size) is left. Robot centres are sampled every r/2 over the map; those at
-/// least 1.02 r from every edge (doubles) that the path's own centres reach through such samples
-/// and that lie farther than r from every piece are grouped 4-connected; each group of at least
-/// `minArea` r² gets circles. Candidates: circles tangent to a piece of the path (a line, or an arc
-/// at the target's projection on it) within 8r of a target, of radius the piece's distance to the
-/// target or half of it, that run the piece's way at the tangent point; the targets are the open
-/// centre nearest the group's centroid and up to three more, each the open centre farthest from
-/// those before (a long or L-shaped group's arms). The candidate that sweeps the most open centres
-/// is tried first (then the nearest piece, the full radius before half); its two halves checked
-/// exactly (ClearanceChecker), else the next, and none that sweeps less than half of `minArea` r².
-/// The robot runs round the circle and on along the piece: 360° of turning, no corner, nothing the
-/// piece swept lost. A group gets up to 3 + (its area / 8r²) circles, at most 16; after each, what
-/// it still has open is split again into 4-connected parts, each patched on its own. The samples
-/// decide only where to try, never safety.
-class EdgeIndex {
-public:
-  /// The workspace's edges by cell (side `reach`, coarser where that would exceed about a million
-  /// cells), listed per cell in two passes (count, then fill).
-  EdgeIndex(const Workspace& w, double reach, BoxD box) : reach_(reach), box_(box) {
-    const double W = box.xmax - box.xmin, H = box.ymax - box.ymin;
-    cell_ = std::max({reach, std::sqrt(W * H / (1024.0 * 1024)), std::max(W, H) / (1024.0 * 1024), 1e-300});
-    nx_ = static_cast<long>(W / cell_) + 1, ny_ = static_cast<long>(H / cell_) + 1;
-    for (const Ring* ring : w.rings())
-      for (std::size_t i = 0; i < ring->size(); ++i) {
-        const Point& p = (*ring)[i];
-        const Point& q = (*ring)[(i + 1) % ring->size()];
-        edges_.push_back({PointD{p.x.get_d(), p.y.get_d()}, PointD{q.x.get_d(), q.y.get_d()}});
-      }
-    auto each = [&](const std::pair<PointD, PointD>& e, auto&& f) {
-      const auto& [a, b] = e;
-      for (long y = key(std::min(a.y, b.y) - reach, box_.ymin, ny_); y <= key(std::max(a.y, b.y) + reach, box_.ymin, ny_); ++y)
-        for (long x = key(std::min(a.x, b.x) - reach, box_.xmin, nx_); x <= key(std::max(a.x, b.x) + reach, box_.xmin, nx_); ++x)
-          f(static_cast<std::size_t>(y * nx_ + x));
-    };
-    start_.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
-    for (const auto& e : edges_) each(e, [&](std::size_t c) { ++start_[c + 1]; });
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    list_.resize(start_.back());
-    for (std::size_t e = 0; e < edges_.size(); ++e) each(edges_[e], [&](std::size_t c) { list_[fill[c]++] = static_cast<std::uint32_t>(e); });
-  }
-  /// No edge within `reach` of p.
-  bool clearOf(PointD p) const {
-    const auto c = static_cast<std::size_t>(key(p.y, box_.ymin, ny_) * nx_ + key(p.x, box_.xmin, nx_));
-    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
-      const auto& [a, b] = edges_[list_[k]];
-      const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-      const double t = l2 > 0 ? std::min(1.0, std::max(0.0, ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2)) : 0;
-      if (std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy) < reach_) return false;
-    }
-    return true;
-  }
-
-private:
-  long key(double v, double origin, long n) const {
-    return std::min(n - 1, std::max(0L, static_cast<long>((v - origin) / cell_)));
-  }
-  double reach_, cell_ = 1;
-  BoxD box_;
-  long nx_ = 1, ny_ = 1;
-  std::vector<std::pair<PointD, PointD>> edges_;
-  std::vector<std::size_t> start_;   ///< the edges of cell c: list_[start_[c] .. start_[c + 1])
-  std::vector<std::uint32_t> list_;
-};
-
 /// Mitred corners, second half: a mitred corner whose two lines are still side by side in the path
 /// gets its arc back where the lines sweep less than r²/8 that no other piece of the path (nor the
 /// arc) does (estimated in doubles from samples every r/8 round the crossing: it decides only which
@@ -2210,6 +2311,24 @@ struct SampledSweep {
 /// piece `when` began. Empty offline.
 using KnownBefore = std::function<bool(const BoxD& b, std::size_t when)>;
 
+/// Patches (ours): the places no sweep, pass or lane reaches. The sweeps stay inside their
+/// rectangles and the passes within 2r of a contour, so a pocket of C-free between obstacles that
+/// stand more than 4r apart across partially occupied mega-cells (large robots among obstacles
+/// about a mega-cell in size) is left. Robot centres are sampled every r/2 over the map; those at
+/// least 1.02 r from every edge (doubles) that the path's own centres reach through such samples
+/// and that lie farther than r from every piece are grouped 4-connected; each group of at least
+/// `minArea` r² gets circles. Candidates: circles tangent to a piece of the path (a line, or an arc
+/// at the target's projection on it) within 8r of a target, of radius the piece's distance to the
+/// target or half of it, that run the piece's way at the tangent point; the targets are the open
+/// centre nearest the group's centroid and up to three more, each the open centre farthest from
+/// those before (a long or L-shaped group's arms). The candidate that sweeps the most open centres
+/// is tried first (then the nearest piece, the full radius before half); its two halves checked
+/// exactly (ClearanceChecker), else the next, and none that sweeps less than half of `minArea` r².
+/// The robot runs round the circle and on along the piece: 360° of turning, no corner, nothing the
+/// piece swept lost. A group gets up to 3 + (its area / 8r²) circles, at most 16; after each, what
+/// it still has open is split again into 4-connected parts, each patched on its own. The samples
+/// decide only where to try, never safety.
+///
 /// minArea = +inf makes no circle and only estimates (the statistics are then not written). Online
 /// (`known` set): only samples whose reach lies in sensed mega-cells, and only circles tangent to
 /// piece j whose every obstacle within r lies in mega-cells sensed before piece j began (the pieces
@@ -2534,7 +2653,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   if (!loops.start.empty()) spliceLoops(ctx, check, loops.start, path, plan);
   if (!online && params.text("rooms") == "travel") {
     const auto t2 = Clock::now();
-    refiner.travel(path, params.text("gaps") == "visit");
+    refiner.travel(path, params.text("gaps"));
     plan.timings.emplace_back("rooms and gaps", std::chrono::duration<double>(Clock::now() - t2).count());
   }
   if (online) {
@@ -2631,10 +2750,12 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
   p.push_back({"rooms", ParamType::kChoice, "travel", "travel|leave",
                "free mega-cells that no tour or sweep reaches (behind a door narrower than a mega-cell): travelled to "
                "along free sub-cells and toured with their own trees (travel), or left (leave, the paper's)"});
-  p.push_back({"gaps", ParamType::kChoice, "leave", "leave|visit",
+  p.push_back({"gaps", ParamType::kChoice, "auto", "auto|leave|visit",
                "with rooms=travel, free sub-cells the path still leaves uncovered (between obstacles closer than a "
                "mega-cell): travelled to and toured depth-first, each group from its nearest sub-cell, each dead end "
-               "left the way it was entered, a reversal (visit), or left (leave)"});
+               "left the way it was entered, a reversal (visit), or left (leave); auto: visit only the groups that hold "
+               "a sub-cell whose centre is within r + eps of an obstacle (a corridor or door exactly 2r wide, which the "
+               "sweeps and contour passes at r + eps cannot enter), leave the rest"});
   p.push_back({"contours", ParamType::kChoice, "auto", "auto|pass|none",
                "one pass along every boundary loop of the start's component of C-free (the walls' and each obstacle's "
                "C-space contour), spliced into the path where it adds the least turning, counted before the detours are "
@@ -2723,7 +2844,12 @@ std::vector<ParamSpec> SmoothStcOnlinePlanner::params() const {
   p.push_back({"rooms", ParamType::kChoice, "travel", "travel|leave",
                "free mega-cells that no tour or sweep reaches, once the robot knows them (sensed from where it has "
                "been): after its tour it goes from room to room along known free sub-cells and tours each with its "
-               "own tree (travel), or leaves them (leave, the paper's)"});
+               "own tree (travel), or leaves them (leave, the paper's); with no room known, it goes to the nearest frontier "
+               "(a known free sub-cell beside a mega-cell it has not sensed) and looks again"});
+  p.push_back({"gaps", ParamType::kChoice, "auto", "auto|leave",
+               "with rooms=travel, from the end of the path: groups of free sub-cells left uncovered that hold one "
+               "squeezed between obstacles on two opposite sides (a corridor exactly 2r wide), visited depth-first as "
+               "offline (auto), or left (leave)"});
   p.push_back(patchesParam("each circle checked exactly against the obstacles of mega-cells sensed before the piece it "
                            "leaves from"));
   return p;
