@@ -2711,12 +2711,53 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
   plan.timings.emplace_back("sweeps", std::chrono::duration<double>(Clock::now() - t).count());
 }
 
+const char* kNoTreeClaim = "swept the C-space contours of the start's component of C-free and what the rooms, gaps and patches reach";
+
+/// Without a tree (StcSkeleton::planWithoutTree: the start's mega-cell is not free, as for a large
+/// robot on a small map: ros/turtlebot3_world.yaml at r = 0.5 has no free mega-cell, nor has a 16 m
+/// world of 25 discs at r = 1). The path begins with a line from the start, r/4 along the first
+/// axis direction (+x, +y, −x, −y) in which it is exactly clear, in two halves so that the loops
+/// have a joint to be spliced at, and refine() does the rest with an empty walk: the contour passes
+/// of the start's component of C-free, the rooms (with no tree, every free mega-cell the path's
+/// sub-cells reach is one), the gaps, the patches. False, and the plan stays invalid_start, when
+/// the contour passes are off (contours=none, or auto on a map above its limit: nothing would be
+/// covered), or no such line is clear with its middle (the joint) in a component of C-free at
+/// r + ε + δ (a start in a corridor exactly 2r wide: no loop is its component's).
+bool planFromStart(const PlanningContext& ctx, const ParamSet& params, const Point& start, Plan& plan, bool online, PocketWalk pocketWalk) {
+  if (!passContours(ctx, params)) return false;
+  const Workspace& w = ctx.problem.workspace;
+  const Rational r = ctx.problem.robots.at(0).radius;
+  const PointD s{start.x.get_d(), start.y.get_d()};
+  const CSpace slack(w, Rational(r + slackOf(w)), 1e-6, ctx.threads);
+  ClearanceChecker check(w, r);
+  const double q = r.get_d() / 4;
+  for (const PointD& d : {PointD{1, 0}, PointD{0, 1}, PointD{-1, 0}, PointD{0, -1}}) {
+    const PointD m{s.x + d.x * q / 2, s.y + d.y * q / 2}, e{s.x + d.x * q, s.y + d.y * q};
+    // the joint m strictly inside a component (contourLoops finds the start's component from it)
+    if (slack.componentOf(Point{exactFromDouble(m.x), exactFromDouble(m.y)}) < 0) continue;
+    if (!pieceClear(check, PathSegment::line(s, m)) || !pieceClear(check, PathSegment::line(m, e))) continue;
+    Path& path = plan.paths.at(0);
+    path.start = s;
+    path.segments = {PathSegment::line(s, m), PathSegment::line(m, e)};
+    refine(ctx, {}, params, path, plan, online, std::move(pocketWalk));
+    plan.status = PlanStatus::kExactSolution;
+    plan.message = "no free mega-cell at the start: " + std::string(kNoTreeClaim);
+    return true;
+  }
+  return false;
+}
+
 const char* kClaim =
     "covered every sub-cell of the start's component of free mega-cells and swept the C-space contour of the partially "
     "occupied mega-cells beside it and of the runs of them beyond, touring the free mega-cells those cut off where a sweep "
     "reached them";
 
 }  // namespace
+
+bool SmoothStcPlanner::planWithoutTree(const PlanningContext& ctx, const ParamSet& params, const Point& start, Plan& plan) const {
+  const graph::GridGraph g = buildGraph(ctx);
+  return planFromStart(ctx, params, start, plan, false, [&](CellIndex s) { return tourOfComponent(ctx, g, s, params); });
+}
 
 std::string SmoothStcPlanner::description() const {
   return "Smooth-STC (Pham, Moore & Truong 2019), offline: STC over the free mega-cells; each partially occupied "
@@ -2869,5 +2910,10 @@ void SmoothStcOnlinePlanner::refinePath(const PlanningContext& ctx, const std::v
 }
 
 std::string SmoothStcOnlinePlanner::coverageClaim() const { return kClaim; }
+
+bool SmoothStcOnlinePlanner::planWithoutTree(const PlanningContext& ctx, const ParamSet& params, const Point& start, Plan& plan) const {
+  const graph::GridGraph g = buildGraph(ctx);
+  return planFromStart(ctx, params, start, plan, true, [&](CellIndex s) { return tourFrom(ctx, g, s, params); });
+}
 
 }  // namespace coverkit::planners

@@ -64,6 +64,8 @@ graph::SpanningTree StcSkeleton::growTree(const graph::GridGraph& g, int root, c
 void StcSkeleton::prepare(const PlanningContext&, const ParamSet&, Plan&) const {}
 void StcSkeleton::refinePath(const PlanningContext&, const std::vector<CellIndex>&, const ParamSet&, Path&, Plan&) const {}
 
+bool StcSkeleton::planWithoutTree(const PlanningContext&, const ParamSet&, const Point&, Plan&) const { return false; }
+
 int StcSkeleton::startNode(const PlanningContext&, const graph::GridGraph& g, CellIndex s) const {
   const int v = g.id(s.col / 2, s.row / 2);
   return g.active[static_cast<std::size_t>(v)] ? v : -1;
@@ -169,6 +171,7 @@ StcSkeleton::Outcome StcSkeleton::planOnce(const PlanningContext& ctx, const Par
 
   CellIndex s;
   const int root = cells.locateSub(start, s) ? startNode(ctx, g, s) : -1;
+  if (root < 0 && planWithoutTree(ctx, params, start, plan)) return Outcome::kDone;
   if (root < 0) {
     plan.status = PlanStatus::kInvalidStart;
     plan.message = "the start is not in a cell " + name() + " can use (" + startCells() + ")";

@@ -673,6 +673,29 @@ TEST(SmoothStc, OnlineRobotSplicesALoopWhoseFirstJointsSeeItOnlyAcrossObstacles)
   }
 }
 
+// No free mega-cell anywhere (r = 1 among 25 discs on 16 m: every 4 m mega-cell holds a disc):
+// the tree has no node, and both planners said invalid_start while Full-STC covered 0.15 of the
+// coverable region. They now start with a short line from the start and pass the contours of the
+// start's component from it (StcSkeleton::planWithoutTree): 0.975 offline, 0.983 online. With the
+// contour passes off there is nothing to do it with: invalid_start, as before.
+TEST(SmoothStc, WithoutAFreeMegaCellItPassesTheContoursFromTheStart) {
+  const auto ctx = testing_helpers::contextFor(seededWorld(16, 16, 25, 0.4, 2.2, datasets::ObstacleShape::kDisc, 7103), Rational(1));
+  const Plan full = planners::runPlanner("full_stc", ctx, {});
+  ASSERT_TRUE(testing_helpers::planIsValid(ctx, full));
+  EXPECT_EQ(planners::runPlanner("stc", ctx, {}).status, PlanStatus::kInvalidStart);
+  for (const std::string name : {"smooth_stc", "smooth_stc_online"}) {
+    SCOPED_TRACE(name);
+    const Plan plan = planners::runPlanner(name, ctx, {});
+    EXPECT_EQ(plan.status, PlanStatus::kExactSolution) << plan.message;
+    ASSERT_TRUE(testing_helpers::planIsValid(ctx, plan));
+    EXPECT_GE(plan.statistics.at("contours_passed"), 1);
+    EXPECT_GT(coverable(ctx, plan), 0.97);
+    EXPECT_GT(coverable(ctx, plan), coverable(ctx, full) + 0.5);
+    EXPECT_EQ(computeMetrics(ctx.problem, ctx.cells, plan.paths).reversals, 0u);
+    EXPECT_EQ(planners::runPlanner(name, ctx, {{"contours", "none"}}).status, PlanStatus::kInvalidStart);
+  }
+}
+
 TEST(SmoothStc, ObstacleSensorAnswersOnlyAboutTheRobotsNeighbourhood) {
   const auto ctx = testing_helpers::contextFor(polygonWorld(21, 10, 5), Rational(1, 4));
   planners::ObstacleSensor sensor(ctx.problem.workspace, ctx.cells);

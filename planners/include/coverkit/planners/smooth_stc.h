@@ -25,6 +25,7 @@ protected:
                   Plan& plan) const override;
   std::string coverageClaim() const override;
   graph::SpanningTree growTree(const graph::GridGraph& g, int root, const ParamSet& params, int rootFirst) const override;
+  bool planWithoutTree(const PlanningContext& context, const ParamSet& params, const Point& start, Plan& plan) const override;
 };
 
 /// Online Smooth-STC (Algorithm 2): the Spiral-STC robot (senses the four neighbouring mega-cells,
@@ -41,6 +42,7 @@ protected:
   void refinePath(const PlanningContext& context, const std::vector<CellIndex>& walk, const ParamSet& params, Path& path,
                   Plan& plan) const override;
   std::string coverageClaim() const override;
+  bool planWithoutTree(const PlanningContext& context, const ParamSet& params, const Point& start, Plan& plan) const override;
 };
 
 }  // namespace coverkit::planners

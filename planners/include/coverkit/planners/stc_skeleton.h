@@ -51,6 +51,9 @@ protected:
   /// map for each was most of the plan's time).
   std::vector<CellIndex> tourOfComponent(const PlanningContext& context, const graph::GridGraph& g, CellIndex s,
                                          const ParamSet& params) const;
+  /// Hook 6: the start lies in no node (hook "startNode" gave -1): plan without a tree, or return
+  /// false (default), and the plan's status is invalid_start. Smooth-STC passes the contours.
+  virtual bool planWithoutTree(const PlanningContext& context, const ParamSet& params, const Point& start, Plan& plan) const;
   /// The graph node the start sub-cell belongs to, or -1 (default: its mega-cell, when active).
   virtual int startNode(const PlanningContext& context, const graph::GridGraph& g, CellIndex start) const;
   /// The cells a start must lie in (for the invalid_start message).
