@@ -1002,8 +1002,11 @@ public:
   /// pass reaches (a room the robot learnt of only after its last source near it) is looked for
   /// from where the path ends, the robot's last position, with all it knows (endSearch).
   /// Decision: a room learnt of late is reached from the end of the path, by a longer way, rather
-  /// than from a point the robot had passed before it knew of the room.
-  void travelOnline(Path& path) {
+  /// than from a point the robot had passed before it knew of the room. `explore`: the gaps and
+  /// frontiers from the end as well (endSearch); off where the contour passes are (a map of more
+  /// than 20,000 vertices under contours=auto), as each search from the end walks the known free
+  /// sub-cells: on a 10^6-cell map hundreds of trips would cost minutes.
+  void travelOnline(Path& path, bool explore) {
     if (failedOnline_.empty()) failedOnline_.assign(cells_.megaCount(), 0);
     // a known free mega-cell in no tree (else no search)
     auto roomKnown = [&] {
@@ -1019,7 +1022,7 @@ public:
     while (roomKnown() && travelPass(path, failedOnline_, false, false)) senseAll(path);   // ways inserted within the path: sensed again in order
     // then from the end, with all the robot knows (each search senses what it appends): every room
     // known from a sub-cell the end is joined to through known free sub-cells
-    while (endSearch(path)) {
+    while ((explore || roomKnown()) && endSearch(path, explore)) {
     }
   }
 
@@ -1049,28 +1052,31 @@ public:
   /// mega-cell in no tree, over known free sub-cells, the first step never back the way the path
   /// came (a reversal); the way there and the room's tour are appended (the robot goes on from
   /// there). Returns whether a room was toured.
-  /// With no room known, the nearest pinched gap it knows (a free sub-cell the path leaves uncovered,
-  /// squeezed between edges on two opposite sides: a corridor exactly 2r wide, markGaps): the way
-  /// there and its group of gaps depth-first (each next sub-cell beside the robot's, so in a
-  /// mega-cell it has sensed; none in a free mega-cell, a room), ending at the last new one (`gaps_visited`), as the offline planner's
-  /// gaps=auto does; from there the first step may go back the way it came (a dead end exactly 2r
-  /// wide is left only so). With neither, the robot explores: it goes to the nearest known free sub-cell from which
-  /// it would sense a mega-cell it has not (a frontier: one beside that sub-cell's mega-cell), and
-  /// searches again from there (`frontier_trips`). Decision: the offline rooms pass reaches free
-  /// mega-cells behind corridors exactly 2r wide (a grid map's one-pixel passages at r of half a
-  /// pixel), whose mega-cells are all partially occupied, so the tour never comes near what lies
-  /// beyond; an online robot that only toured the rooms it had sensed left them (a maze at r = 0.5
-  /// covered 0.76 against offline's 0.98). Each trip senses at least one new mega-cell, so the trips
-  /// end; the 16 nearest frontiers are tried, nearest first, until one's way is exactly clear.
-  bool endSearch(Path& path) {
+  /// With no room known, the nearest pinched gap it knows (gaps=auto: a free sub-cell the path
+  /// leaves uncovered, squeezed between edges on two opposite sides, a corridor exactly 2r wide;
+  /// markGaps): the way there and its group of gaps depth-first (each next sub-cell beside the
+  /// robot's, so in a mega-cell it has sensed; none in a free mega-cell, a room), as far as its
+  /// moves are exactly clear, ending at the last new one (`gaps_visited`); a group of one is left,
+  /// as offline. With neither, the robot explores: it goes to the nearest known free sub-cell from
+  /// which it would sense a mega-cell it has not (a frontier: one beside that sub-cell's
+  /// mega-cell; the 16 nearest tried, nearest first, until one's way is exactly clear), and searches
+  /// again from there (`frontier_trips`). After a gap's walk or a frontier trip the first step may
+  /// go back the way it came: it most likely ended in a dead end, which is left only so.
+  /// Decision: the offline rooms pass reaches free mega-cells behind corridors exactly 2r wide (a
+  /// grid map's one-pixel passages at r of half a pixel), whose mega-cells are all partially
+  /// occupied, so the tour never comes near what lies beyond; an online robot that only toured the
+  /// rooms it had sensed left them (a maze at r = 0.5 covered 0.76 against offline's 0.98). Each
+  /// trip senses at least one new mega-cell and each walk takes its gaps, so they end.
+  bool endSearch(Path& path, bool explore) {
     const int sc = cells_.subCols();
     const std::size_t now = path.segments.size();
     auto knownFree = [&](int c, int r) {
       return cells_.insideSub(c, r) && knownAt_[megaIndex(c / 2, r / 2)] <= now && cells_.sub(c, r) == CellState::kFree;
     };
-    const CoverIndex cover = coverIndexOf(path);
-    const bool mayReverse = endedInGap_;   // the path ends in a gap's walk
-    endedInGap_ = false;
+    std::optional<CoverIndex> cover;   // for the gaps alone
+    if (explore && onlineGaps_) cover.emplace(coverIndexOf(path));
+    // the path ends where a gap's walk or a frontier trip ended (a dead end, most likely)
+    const bool mayReverse = detourEnd_ == path.segments.size();
     if (failedGapOnline_.size() != cells_.subCount()) failedGapOnline_.assign(cells_.subCount(), 0);
     for (;;) {
       if (path.segments.empty()) return false;
@@ -1096,8 +1102,8 @@ public:
           found = v;
           break;
         }
-        if (v != start && frontiers.size() < kFrontiersTried && unsensedBeside(col, row)) frontiers.push_back(v);
-        if (onlineGaps_ && gap < 0 && v != start && !failedGapOnline_[static_cast<std::size_t>(v)] && gapAt(cover, col, row) && pinched(v)) gap = v;
+        if (explore && v != start && frontiers.size() < kFrontiersTried && unsensedBeside(col, row)) frontiers.push_back(v);
+        if (explore && onlineGaps_ && gap < 0 && v != start && !failedGapOnline_[static_cast<std::size_t>(v)] && gapAt(*cover, col, row) && pinched(v)) gap = v;
         for (int d = 0; d < 4; ++d) {
           const int c = col + graph::kDx[d], r = row + graph::kDy[d];
           if (!knownFree(c, r) || parent[static_cast<std::size_t>(r * sc + c)] != -2) continue;
@@ -1121,10 +1127,20 @@ public:
         return there;
       };
       if (found < 0 && gap >= 0) {   // a pinched gap (a corridor exactly 2r wide): there, and its group depth-first
-        markGaps(path, false);
-        // not into a free mega-cell: a room, toured with its own tree once found (next search)
-        for (std::size_t k = 0; k < gap_.size(); ++k)
-          if (gap_[k] && cells_.mega(static_cast<int>(k % sc) / 2, static_cast<int>(k / sc) / 2) == CellState::kFree) gap_[k] = 0;
+        // its group: the gaps 4-connected to it, none in a free mega-cell (a room, toured with its
+        // own tree once found: next search)
+        gap_.assign(cells_.subCount(), 0);
+        std::vector<int> group{gap};
+        gap_[static_cast<std::size_t>(gap)] = 1;
+        for (std::size_t head = 0; head < group.size(); ++head)
+          for (int d = 0; d < 4; ++d) {
+            const int c = group[head] % sc + graph::kDx[d], rr = group[head] / sc + graph::kDy[d];
+            if (!cells_.insideSub(c, rr) || gap_[static_cast<std::size_t>(rr) * sc + c] || cells_.mega(c / 2, rr / 2) == CellState::kFree ||
+                !gapAt(*cover, c, rr))
+              continue;
+            gap_[static_cast<std::size_t>(rr) * sc + c] = 1;
+            group.push_back(rr * sc + c);
+          }
         std::vector<CellIndex> pw = gapWalk(gap);
         if (pw.size() < 2) {   // a niche of one sub-cell, left as offline
           failedGapOnline_[static_cast<std::size_t>(gap)] = 1;
@@ -1137,10 +1153,6 @@ public:
           if (seen.insert({pw[i].col, pw[i].row}).second) last = i;
         pw.resize(last + 1);
         std::vector<PathSegment> there = wayTo(gap);
-        if (pw.size() > 1) {
-          const std::vector<PathSegment> walk = linesThrough(pw);
-          there.insert(there.end(), walk.begin(), walk.end());
-        }
         bool ok = !there.empty();
         for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
         if (!ok) {
@@ -1148,10 +1160,15 @@ public:
           ++gapsLeft_;
           continue;
         }
+        // the walk as far as its moves are exactly clear (checked as the robot comes to them)
+        for (const PathSegment& p : linesThrough(pw)) {
+          if (!clear(p)) break;
+          there.push_back(p);
+        }
         path.segments.insert(path.segments.end(), there.begin(), there.end());
         for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
         ++gapsJoined_;
-        endedInGap_ = true;
+        detourEnd_ = path.segments.size();
         return true;
       }
       if (found < 0) {   // explore: the way to the nearest frontier whose way is exactly clear, sensing as it goes
@@ -1163,6 +1180,7 @@ public:
           path.segments.insert(path.segments.end(), there.begin(), there.end());
           for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
           ++frontierTrips_;
+          detourEnd_ = path.segments.size();
           return true;
         }
         return false;
@@ -1253,17 +1271,16 @@ public:
     return missed >= 2;
   }
 
-  /// Sub-cell v is squeezed between obstacle edges on two opposite sides (markGaps).
+  /// Sub-cell v is squeezed between obstacle edges on two opposite sides (markGaps): an edge
+  /// within 2(ε + δ) of the middles of both its left and right sides, or of both its bottom and top
+  /// (doubles). Those points lie in v's mega-cell's box grown by a sub-cell, whose obstacles the
+  /// online robot's sensor reports with the mega-cell.
   bool pinched(int v) {
-    if (!pinchedEdges_) {
-      const double r = ctx_.problem.robots.at(0).radius.get_d(), slack = slackOf(ctx_.problem.workspace).get_d();
-      pinchedEdges_ = std::make_unique<EdgeIndex>(ctx_.problem.workspace, r + slack, mapBox());
-      pinchedShift_ = 2 * slack;
-    }
-    const double s2 = pinchedShift_;
+    if (!pinchedEdges_) pinchedEdges_ = std::make_unique<EdgeIndex>(ctx_.problem.workspace, 2 * slackOf(ctx_.problem.workspace).get_d(), mapBox());
+    const double r = ctx_.problem.robots.at(0).radius.get_d();
     const PointD c = cells_.subCenterD(v % cells_.subCols(), v / cells_.subCols());
     const EdgeIndex& edges = *pinchedEdges_;
-    return (!edges.clearOf({c.x + s2, c.y}) && !edges.clearOf({c.x - s2, c.y})) || (!edges.clearOf({c.x, c.y + s2}) && !edges.clearOf({c.x, c.y - s2}));
+    return (!edges.clearOf({c.x + r, c.y}) && !edges.clearOf({c.x - r, c.y})) || (!edges.clearOf({c.x, c.y + r}) && !edges.clearOf({c.x, c.y - r}));
   }
 
   /// Gaps (gaps=visit): free sub-cells that the path, with its rooms, leaves uncovered (two of five
@@ -1274,10 +1291,10 @@ public:
   /// centre (each move in the union of two free sub-cells), as Full-STC goes through a partially
   /// occupied mega-cell; a dead end one sub-cell wide is left the way it was entered.
   /// `pinchedOnly` (gaps=auto): only the groups of at least two sub-cells (a niche of one is worth
-  /// less than its reversal) that hold a pinched sub-cell, one squeezed between
-  /// obstacle edges on two opposite sides: its centre moved by 2(ε + δ) towards either side (both
-  /// along x, or both along y) lies within r + ε + δ of an edge (doubles; it only chooses where to
-  /// go). That is a corridor or door exactly 2r wide (a grid map's one-pixel passage at r of half a
+  /// less than its reversal) that hold a pinched sub-cell, one squeezed between obstacle edges on
+  /// two opposite sides: an edge within 2(ε + δ) of the middles of both its left and right sides,
+  /// or of both its bottom and top (doubles; it only chooses where to go). That is a corridor or
+  /// door exactly 2r wide (a grid map's one-pixel passage at r of half a
   /// pixel): C-free at r but not at r + ε + δ, the radius of the sweeps and the contour passes, so
   /// no sweep, pass or patch reaches it or what lies behind it. A sub-cell with an edge on one side
   /// only (an obstacle's side on the sub-cell grid) is not pinched: the contour pass runs beside it.
@@ -1642,9 +1659,8 @@ private:
   std::size_t skipped_ = 0; ///< detours left out: what they would sweep was swept already
   std::size_t roomsFromEnd_ = 0;   ///< online: rooms reached from where the path ended (endSearch)
   std::size_t frontierTrips_ = 0;  ///< online: ways from the path's end to a frontier (endSearch)
-  std::unique_ptr<EdgeIndex> pinchedEdges_;   ///< the obstacle edges within r + ε + δ, for pinched()
-  double pinchedShift_ = 0;                   ///< 2(ε + δ), for pinched()
-  bool endedInGap_ = false;   ///< online: the path ends in a gap's walk (most likely a dead end, left the way it came)
+  std::unique_ptr<EdgeIndex> pinchedEdges_;   ///< the obstacle edges, reach 2(ε + δ), for pinched()
+  std::size_t detourEnd_ = 0;   ///< online: the path's length when a gap's walk or a frontier trip ended it
   std::vector<std::uint8_t> failedGapOnline_;   ///< online: pinched gaps whose visit was not exactly clear
   static constexpr std::size_t kFrontiersTried = 16;   ///< online: the nearest frontiers whose ways are checked, a search
   std::size_t roomsJoined_ = 0, roomsLeft_ = 0, gapsJoined_ = 0, gapsLeft_ = 0;
@@ -2668,7 +2684,7 @@ void refine(const PlanningContext& ctx, const std::vector<CellIndex>& walk, cons
     for (std::size_t before = static_cast<std::size_t>(-1); before != path.segments.size();) {
       before = path.segments.size();
       if (!l.start.empty()) spliceLoops(ctx, check, l.start, path, plan, true, true, &spliced);
-      if (rooms) refiner.travelOnline(path);
+      if (rooms) refiner.travelOnline(path, passContours(ctx, params));
       if (l.start.empty()) break;   // no loops: the rooms pass has done all it can
     }
     plan.statistics["contours_passed"] = static_cast<double>(std::count(spliced.begin(), spliced.end(), std::uint8_t{1}));
@@ -2794,9 +2810,9 @@ std::vector<ParamSpec> SmoothStcPlanner::params() const {
   p.push_back({"gaps", ParamType::kChoice, "auto", "auto|leave|visit",
                "with rooms=travel, free sub-cells the path still leaves uncovered (between obstacles closer than a "
                "mega-cell): travelled to and toured depth-first, each group from its nearest sub-cell, each dead end "
-               "left the way it was entered, a reversal (visit), or left (leave); auto: visit only the groups that hold "
-               "a sub-cell whose centre is within r + eps of an obstacle (a corridor or door exactly 2r wide, which the "
-               "sweeps and contour passes at r + eps cannot enter), leave the rest"});
+               "left the way it was entered, a reversal (visit), or left (leave); auto: visit only the groups of at least "
+               "two that hold a sub-cell squeezed between obstacles on two opposite sides (a corridor or door exactly 2r "
+               "wide, which the sweeps and contour passes at r + eps cannot enter), leave the rest"});
   p.push_back({"contours", ParamType::kChoice, "auto", "auto|pass|none",
                "one pass along every boundary loop of the start's component of C-free (the walls' and each obstacle's "
                "C-space contour), spliced into the path where it adds the least turning, counted before the detours are "
@@ -2885,12 +2901,12 @@ std::vector<ParamSpec> SmoothStcOnlinePlanner::params() const {
   p.push_back({"rooms", ParamType::kChoice, "travel", "travel|leave",
                "free mega-cells that no tour or sweep reaches, once the robot knows them (sensed from where it has "
                "been): after its tour it goes from room to room along known free sub-cells and tours each with its "
-               "own tree (travel), or leaves them (leave, the paper's); with no room known, it goes to the nearest frontier "
-               "(a known free sub-cell beside a mega-cell it has not sensed) and looks again"});
+               "own tree (travel), or leaves them (leave, the paper's); with the contour passes and no room known, it "
+               "goes to the nearest frontier (a known free sub-cell beside a mega-cell it has not sensed) and looks again"});
   p.push_back({"gaps", ParamType::kChoice, "auto", "auto|leave",
-               "with rooms=travel, from the end of the path: groups of free sub-cells left uncovered that hold one "
-               "squeezed between obstacles on two opposite sides (a corridor exactly 2r wide), visited depth-first as "
-               "offline (auto), or left (leave)"});
+               "with rooms=travel and the contour passes, from the end of the path: the nearest free sub-cell left "
+               "uncovered that is squeezed between obstacles on two opposite sides (a corridor exactly 2r wide) and its "
+               "group, visited depth-first (auto), or left (leave)"});
   p.push_back(patchesParam("each circle checked exactly against the obstacles of mega-cells sensed before the piece it "
                            "leaves from"));
   return p;
