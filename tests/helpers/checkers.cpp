@@ -128,7 +128,18 @@ std::vector<char> flood(const CellGrid& cells, CellIndex s, Ok ok) {
   const CellGrid& cells = ctx.cells;
   CellIndex s;
   if (!cells.locateSub(*ctx.problem.robots[0].start, s)) return ::testing::AssertionFailure() << "start outside the grid";
-  if (cells.mega(s.col / 2, s.row / 2) != CellState::kFree) return ::testing::AssertionFailure() << "start mega-cell not free";
+  if (cells.mega(s.col / 2, s.row / 2) != CellState::kFree) {
+    // a planner that plans without a tree there (Smooth-STC passes the contours from the start,
+    // StcSkeleton::planWithoutTree) claims no free mega-cell, only that it passed its component's
+    // contours (how much that covers is the planner's own tests'; gaps exactly 2r wide, common on a
+    // grid of 0.1 m pixels at r = 0.15, leave parts of the coverable region, as with a tree)
+    if (plan.status == PlanStatus::kExactSolution && plan.message.rfind("no free mega-cell at the start", 0) == 0) {
+      const auto it = plan.statistics.find("contours_passed");
+      if (it != plan.statistics.end() && it->second >= 1) return ::testing::AssertionSuccess();
+      return ::testing::AssertionFailure() << "planned without a tree and passed no contour";
+    }
+    return ::testing::AssertionFailure() << "start mega-cell not free";
+  }
   // the sub-cells of the free mega-cells 4-connected to the start's
   const auto comp = flood(cells, s, [&](int c, int r) { return cells.mega(c / 2, r / 2) == CellState::kFree; });
   const auto seen = enteredSubcells(cells, plan);
