@@ -1116,7 +1116,16 @@ public:
           queue.push_back(r * sc + c);
         }
       }
-      // the way from `at` to sub-cell t over the search's chain, straight runs merged
+      // the robot goes on along `pieces` (from the path's end), sensing as it goes
+      auto append = [&](const std::vector<PathSegment>& pieces) {
+        path.segments.insert(path.segments.end(), pieces.begin(), pieces.end());
+        for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
+      };
+      auto allClear = [&](const std::vector<PathSegment>& pieces) {
+        return !pieces.empty() && std::all_of(pieces.begin(), pieces.end(), [&](const PathSegment& p) { return clear(p); });
+      };
+      // the way from `at` to sub-cell t over the search's chain, straight runs merged (none where
+      // the robot stands at t's centre already)
       auto wayTo = [&](int t) {
         std::vector<int> chain{t};
         while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
@@ -1130,17 +1139,9 @@ public:
         // its group: the gaps 4-connected to it, none in a free mega-cell (a room, toured with its
         // own tree once found: next search)
         gap_.assign(cells_.subCount(), 0);
-        std::vector<int> group{gap};
-        gap_[static_cast<std::size_t>(gap)] = 1;
-        for (std::size_t head = 0; head < group.size(); ++head)
-          for (int d = 0; d < 4; ++d) {
-            const int c = group[head] % sc + graph::kDx[d], rr = group[head] / sc + graph::kDy[d];
-            if (!cells_.insideSub(c, rr) || gap_[static_cast<std::size_t>(rr) * sc + c] || cells_.mega(c / 2, rr / 2) == CellState::kFree ||
-                !gapAt(*cover, c, rr))
-              continue;
-            gap_[static_cast<std::size_t>(rr) * sc + c] = 1;
-            group.push_back(rr * sc + c);
-          }
+        groupOf(gap, 1, [&](int c, int rr) {
+          return !gap_[static_cast<std::size_t>(rr) * sc + c] && cells_.mega(c / 2, rr / 2) != CellState::kFree && gapAt(*cover, c, rr);
+        });
         std::vector<CellIndex> pw = gapWalk(gap);
         if (pw.size() < 2) {   // a niche of one sub-cell, left as offline
           failedGapOnline_[static_cast<std::size_t>(gap)] = 1;
@@ -1153,9 +1154,7 @@ public:
           if (seen.insert({pw[i].col, pw[i].row}).second) last = i;
         pw.resize(last + 1);
         std::vector<PathSegment> there = wayTo(gap);
-        bool ok = !there.empty();
-        for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
-        if (!ok) {
+        if (!allClear(there)) {
           for (const CellIndex& c : pw) failedGapOnline_[static_cast<std::size_t>(c.row) * sc + c.col] = 1;
           ++gapsLeft_;
           continue;
@@ -1165,8 +1164,7 @@ public:
           if (!clear(p)) break;
           there.push_back(p);
         }
-        path.segments.insert(path.segments.end(), there.begin(), there.end());
-        for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
+        append(there);
         ++gapsJoined_;
         detourEnd_ = path.segments.size();
         return true;
@@ -1174,11 +1172,8 @@ public:
       if (found < 0) {   // explore: the way to the nearest frontier whose way is exactly clear, sensing as it goes
         for (int frontier : frontiers) {
           std::vector<PathSegment> there = wayTo(frontier);
-          bool ok = !there.empty();
-          for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
-          if (!ok) continue;
-          path.segments.insert(path.segments.end(), there.begin(), there.end());
-          for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
+          if (!allClear(there)) continue;
+          append(there);
           ++frontierTrips_;
           detourEnd_ = path.segments.size();
           return true;
@@ -1187,12 +1182,7 @@ public:
       }
       const CellIndex ec{found % sc, found / sc};
       const std::size_t room = megaIndex(ec.col / 2, ec.row / 2);
-      std::vector<int> chain{found};   // e back to the start
-      while (parent[static_cast<std::size_t>(chain.back())] >= 0) chain.push_back(parent[static_cast<std::size_t>(chain.back())]);
-      std::vector<PointD> way{at};
-      for (std::size_t i = chain.size(); i-- > 0;) way.push_back(cells_.subCenterD(chain[i] % sc, chain[i] / sc));
-      std::vector<PathSegment> there = mergedLines(way);
-      while (!there.empty() && there.front().length() <= 1e-9 * cells_.subSizeD()) there.erase(there.begin());   // at the centre already
+      std::vector<PathSegment> there = wayTo(found);
       std::vector<CellIndex> pw = pocketWalk_(ec);
       bool ok = pw.size() >= 3 && pw.front() == ec && pw.back() == ec && !there.empty();
       std::vector<std::size_t> marked;
@@ -1203,7 +1193,7 @@ public:
       }
       if (ok) {
         joinWay(there, placed.path.segments);
-        for (std::size_t i = 0; ok && i < there.size(); ++i) ok = clear(there[i]);
+        ok = allClear(there);
       }
       if (!ok) {
         for (std::size_t m : marked) inTree_[m] = 0;
@@ -1212,9 +1202,8 @@ public:
         continue;
       }
       tour(pw, placed.path);   // the room's sweeps, made online as the robot reaches them
-      path.segments.insert(path.segments.end(), there.begin(), there.end());
-      path.segments.insert(path.segments.end(), placed.path.segments.begin(), placed.path.segments.end());
-      for (std::size_t k = now; k < path.segments.size(); ++k) senseAlong(path.segments[k], k + 1);
+      there.insert(there.end(), placed.path.segments.begin(), placed.path.segments.end());
+      append(there);
       ++roomsJoined_;
       ++roomsFromEnd_;
       return true;
@@ -1298,6 +1287,23 @@ public:
   /// pixel): C-free at r but not at r + ε + δ, the radius of the sweeps and the contour passes, so
   /// no sweep, pass or patch reaches it or what lies behind it. A sub-cell with an edge on one side
   /// only (an obstacle's side on the sub-cell grid) is not pinched: the contour pass runs beside it.
+  /// The sub-cells 4-connected to `seed` that `ok(col, row)` accepts, breadth-first from it; each
+  /// taken (the seed too) is set to `mark` in gap_, which `ok` reads to pass over those taken.
+  template <class Ok>
+  std::vector<int> groupOf(int seed, std::uint8_t mark, Ok ok) {
+    const int sc = cells_.subCols();
+    std::vector<int> group{seed};
+    gap_[static_cast<std::size_t>(seed)] = mark;
+    for (std::size_t head = 0; head < group.size(); ++head)
+      for (int d = 0; d < 4; ++d) {
+        const int c = group[head] % sc + graph::kDx[d], rr = group[head] / sc + graph::kDy[d];
+        if (!cells_.insideSub(c, rr) || !ok(c, rr)) continue;
+        gap_[static_cast<std::size_t>(rr) * sc + c] = mark;
+        group.push_back(rr * sc + c);
+      }
+    return group;
+  }
+
   void markGaps(const Path& path, bool pinchedOnly) {
     const CoverIndex index = coverIndexOf(path);
     gap_.assign(cells_.subCount(), 0);
@@ -1306,23 +1312,10 @@ public:
     if (!pinchedOnly) return;
     const int sc = cells_.subCols();
     std::vector<std::uint8_t> keep(gap_.size(), 0);
-    std::vector<int> group;
     for (std::size_t k = 0; k < gap_.size(); ++k) {
-      if (gap_[k] != 1) continue;
-      group.assign(1, static_cast<int>(k));
-      gap_[k] = 2;   // seen
-      bool pinched = false;
-      for (std::size_t head = 0; head < group.size(); ++head) {
-        const int v = group[head];
-        pinched = pinched || this->pinched(v);
-        for (int d = 0; d < 4; ++d) {
-          const int c = v % sc + graph::kDx[d], rr = v / sc + graph::kDy[d];
-          if (!cells_.insideSub(c, rr) || gap_[static_cast<std::size_t>(rr) * sc + c] != 1) continue;
-          gap_[static_cast<std::size_t>(rr) * sc + c] = 2;
-          group.push_back(rr * sc + c);
-        }
-      }
-      if (pinched && group.size() >= 2)   // a niche of one sub-cell: a reversal for 4r²
+      if (gap_[k] != 1) continue;   // 2: in a group seen
+      const std::vector<int> group = groupOf(static_cast<int>(k), 2, [&](int c, int rr) { return gap_[static_cast<std::size_t>(rr) * sc + c] == 1; });
+      if (group.size() >= 2 && std::any_of(group.begin(), group.end(), [&](int v) { return pinched(v); }))   // a niche of one: a reversal for 4r²
         for (int v : group) keep[static_cast<std::size_t>(v)] = 1;
     }
     gap_.swap(keep);
